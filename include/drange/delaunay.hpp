@@ -1,0 +1,85 @@
+// drange/delaunay.hpp: the Delaunay triangulation of points in E^d by the D-Range direct
+// algorithm (Tereshchenko and Taran, "An approach for computing the Delaunay triangulation
+// and the Voronoi diagram in E^d"), with exact predicates and a symbolic perturbation.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "drange/points.hpp"
+
+namespace drange {
+
+// How the next simplex of an open facet is searched (paper, section 2.4). The defaults are
+// the full algorithm; the switches exist so that the gain of each step can be measured.
+struct SearchOptions {
+  bool use_kdtree = true;               // false: scan every point for every facet (the slow direct algorithm)
+  bool prune_closed_side = true;        // 2.4.1: skip kd-tree nodes wholly on the closed side of the facet
+  bool visit_facet_child_first = true;  // 2.4.2: descend first into the child that holds the facet
+};
+
+// Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order".
+// Throws UsageError naming the unknown value.
+SearchOptions search_variant(const std::string& name);
+// The names accepted by search_variant, for help texts.
+const char* search_variant_names();
+
+struct Options {
+  SearchOptions search;
+  bool compute_neighbors = true;  // fill Triangulation::neighbors
+};
+
+// One input point that is an exact copy of an earlier one; it is left out of the triangulation.
+struct Duplicate {
+  std::int64_t index;     // the copy (zero-based input index)
+  std::int64_t original;  // the first input point with the same coordinates
+};
+
+struct Statistics {
+  std::size_t points = 0;           // input points
+  std::size_t distinct_points = 0;  // points after removing exact duplicates
+  std::size_t simplices = 0;
+  std::size_t hull_facets = 0;       // facets whose search found nothing: the convex hull
+  std::size_t search_calls = 0;      // kd-tree nodes entered by all searches (the paper's "Calls" numerator)
+  std::size_t points_tested = 0;     // points inside a query box, tested against the candidate sphere
+  std::size_t candidates = 0;        // times a search's candidate point was set or improved
+  std::size_t exact_fallbacks = 0;   // decisions the floating-point filter could not take
+  std::size_t max_open_facets = 0;   // the largest frontier held in the facet table
+  double seconds_kdtree = 0;         // building the kd-tree (including sorting and deduplication)
+  double seconds_first_facet = 0;    // gift wrapping to the first facet
+  double seconds_search = 0;         // the main loop: searches, facet table, simplices and neighbours
+  double seconds_total = 0;
+  std::size_t peak_rss_bytes = 0;    // process peak resident memory at the end of the run
+
+  // Search calls per simplex, the paper's "Calls" column of Table 1.
+  double calls_per_simplex() const { return simplices ? double(search_calls) / double(simplices) : 0.0; }
+  // One line, "key=value" pairs, for logs and the CLI's --stats.
+  std::string summary() const;
+};
+
+// The result, in flat arrays like scipy.spatial.Delaunay:
+//   simplices[s*(d+1) + k]  vertex k of simplex s (zero-based input index); every simplex is
+//                           positively oriented (det[v1-v0, ..., vd-v0] > 0);
+//   neighbors[s*(d+1) + k]  the simplex opposite vertex k of simplex s, -1 on the hull.
+struct Triangulation {
+  int dim = 0;
+  std::size_t num_points = 0;
+  std::vector<std::int32_t> simplices;
+  std::vector<std::int32_t> neighbors;
+  std::vector<Duplicate> duplicates;
+  Statistics stats;
+
+  std::size_t size() const { return dim > 0 ? simplices.size() / static_cast<std::size_t>(dim + 1) : 0; }
+  const std::int32_t* simplex(std::size_t s) const { return simplices.data() + s * static_cast<std::size_t>(dim + 1); }
+};
+
+// Computes the Delaunay triangulation of the points. Exact on every input: ties between
+// cospherical points are broken by a symbolic perturbation that depends only on the
+// coordinates, so any permutation of the input gives the same simplices.
+// Throws InputError (NaN/infinite coordinate, bad dimension) or DegenerateInputError
+// (fewer than d+1 distinct points, or all points in one hyperplane).
+Triangulation delaunay(PointsView points, const Options& options = {});
+
+}  // namespace drange

@@ -1,0 +1,66 @@
+// delaunay/facet_table.hpp: the open facets of the paper's section 2.3.
+//
+// A facet is keyed by its d vertex ids in increasing order. The table holds the frontier only:
+// a facet is inserted when the first simplex on one of its sides is found, and removed when it
+// is met a second time (the simplex on its other side was found). The hash is the paper's
+// polynomial in the ids, taken modulo 2^64 and mixed; collisions are resolved by linear probing,
+// and removal shifts the following entries back (no tombstones), so lookups stay short.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace drange::engine {
+
+// Where a facet was seen: the simplex, and the index (0..d) of the vertex opposite the facet.
+struct FacetOwner {
+  std::int32_t simplex;
+  std::int32_t face;
+};
+
+class FacetTable {
+ public:
+  explicit FacetTable(int d) : d_(d) { rehash(1024); }
+
+  // If the facet is open, removes it and returns its owner through `other` (true: closed).
+  // Otherwise inserts it as open with `owner` and returns false.
+  bool close_or_open(const std::int32_t* sorted_ids, FacetOwner owner, FacetOwner* other);
+  bool contains(const std::int32_t* sorted_ids) const { return find(sorted_ids, hash(sorted_ids)) >= 0; }
+  // Removes the facet if it is open; returns whether it was.
+  bool remove(const std::int32_t* sorted_ids) {
+    const long slot = find(sorted_ids, hash(sorted_ids));
+    if (slot < 0) return false;
+    erase(static_cast<std::size_t>(slot));
+    return true;
+  }
+  std::size_t size() const { return size_; }
+  std::size_t memory_bytes() const { return ids_.capacity() * sizeof(std::int32_t) + owners_.capacity() * sizeof(FacetOwner); }
+
+ private:
+  std::uint64_t hash(const std::int32_t* ids) const {
+    std::uint64_t h = 0;
+    for (int k = 0; k < d_; ++k) h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(ids[k]);
+    h ^= h >> 29;
+    h *= 0xBF58476D1CE4E5B9ull;
+    return h ^ (h >> 32);
+  }
+  const std::int32_t* slot_ids(std::size_t slot) const { return &ids_[slot * static_cast<std::size_t>(d_)]; }
+  bool empty(std::size_t slot) const { return ids_[slot * static_cast<std::size_t>(d_)] < 0; }
+  bool equal(std::size_t slot, const std::int32_t* ids) const {
+    const std::int32_t* s = slot_ids(slot);
+    for (int k = 0; k < d_; ++k)
+      if (s[k] != ids[k]) return false;
+    return true;
+  }
+  long find(const std::int32_t* ids, std::uint64_t h) const;
+  void erase(std::size_t slot);
+  void rehash(std::size_t capacity);
+
+  int d_;
+  std::size_t mask_ = 0;
+  std::size_t size_ = 0;
+  std::vector<std::int32_t> ids_;  // capacity * d; -1 in the first id marks an empty slot
+  std::vector<FacetOwner> owners_;
+};
+
+}  // namespace drange::engine

@@ -1,0 +1,244 @@
+// delaunay/first_facet.cpp: gift wrapping to a supporting hyperplane, and a Delaunay facet on it.
+#include "delaunay/first_facet.hpp"
+
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include "drange/errors.hpp"
+#include "geometry/predicates.hpp"
+
+namespace drange::engine {
+namespace {
+
+using Ids = std::vector<std::int32_t>;
+using Axes = std::vector<int>;
+
+// The dimension of the affine hull of all points, exactly (only used to word an error).
+int affine_dimension(const PointStore& points) {
+  const int d = points.dim;
+  std::vector<std::vector<mpq_class>> basis;  // echelon rows
+  std::vector<int> pivots;
+  const double* origin = points.point(0);
+  for (std::int32_t id = 1; id < points.size && static_cast<int>(basis.size()) < d; ++id) {
+    std::vector<mpq_class> v(static_cast<std::size_t>(d));
+    for (int k = 0; k < d; ++k) v[static_cast<std::size_t>(k)] = mpq_class(points.point(id)[k]) - mpq_class(origin[k]);
+    for (std::size_t b = 0; b < basis.size(); ++b) {
+      const auto c = static_cast<std::size_t>(pivots[b]);
+      if (v[c] == 0) continue;
+      const mpq_class factor = v[c] / basis[b][c];
+      for (int k = 0; k < d; ++k) v[static_cast<std::size_t>(k)] -= factor * basis[b][static_cast<std::size_t>(k)];
+    }
+    const auto nonzero = std::find_if(v.begin(), v.end(), [](const mpq_class& x) { return x != 0; });
+    if (nonzero == v.end()) continue;
+    pivots.push_back(static_cast<int>(nonzero - v.begin()));
+    basis.push_back(std::move(v));
+  }
+  return static_cast<int>(basis.size());
+}
+
+[[noreturn]] void throw_flat(const PointStore& points) {
+  const int k = affine_dimension(points);
+  throw DegenerateInputError("all " + std::to_string(points.size) + " distinct points lie in an affine subspace of dimension " +
+                             std::to_string(k) + "; a Delaunay triangulation in " + std::to_string(points.dim) +
+                             " dimensions needs points that span " + std::to_string(points.dim) + " dimensions");
+}
+
+class Wrapper {
+ public:
+  explicit Wrapper(const PointStore& points) : points_(points), d_(points.dim) {}
+
+  struct Support {
+    Ids facet;                 // k ids, a Delaunay simplex of the points on the hyperplane
+    std::int32_t off = -1;     // a point strictly off the hyperplane
+  };
+
+  // d points spanning a supporting hyperplane of `ids` within their k-flat (k = axes.size()),
+  // forming a Delaunay (k-1)-simplex of the points on it.
+  Support supporting_facet(const Ids& ids, const Axes& axes);
+
+  // A Delaunay k-simplex (k+1 ids) of `ids` within their k-flat.
+  Ids simplex_in_flat(const Ids& ids, const Axes& axes);
+
+ private:
+  // Orientation in the frame of the first k of `axes`, based at `base`, of the k given points.
+  int orient(const int* axes, int k, std::int32_t base, const Ids& others) {
+    pointers_.clear();
+    for (std::int32_t id : others) pointers_.push_back(points_.point(id));
+    const geometry::Frame frame{d_, k, axes, points_.point(base)};
+    return geometry::orientation(frame, pointers_.data());
+  }
+  std::int32_t gift_wrap_step(const Ids& ids, const Axes& axes, const Ids& found);
+  std::int32_t lexicographic_minimum(const Ids& ids, const Axes& axes) const;
+
+  const PointStore& points_;
+  int d_;
+  std::vector<const double*> pointers_;
+};
+
+std::int32_t Wrapper::lexicographic_minimum(const Ids& ids, const Axes& axes) const {
+  return *std::min_element(ids.begin(), ids.end(), [&](std::int32_t a, std::int32_t b) {
+    for (int axis : axes) {
+      const double x = points_.point(a)[axis], y = points_.point(b)[axis];
+      if (x != y) return x < y;
+    }
+    return false;
+  });
+}
+
+// Step j = found.size() of the paper's wrapping: the hyperplane F_{j-1} contains the points
+// found and the directions of axes j..k-1, and no point is on its negative side. Rotating it
+// about the flat G spanned by the found points and axes j+1..k-1 (dropping axis j), we return a
+// point v such that G + v is again a supporting hyperplane.
+std::int32_t Wrapper::gift_wrap_step(const Ids& ids, const Axes& axes, const Ids& found) {
+  const int j = static_cast<int>(found.size());
+  const std::int32_t v0 = found[0];
+  Ids rows(found.begin() + 1, found.end());
+  rows.push_back(-1);  // the point under test
+  Ids rotation_rows = rows;
+  rotation_rows.push_back(-1);
+  Axes without(static_cast<std::size_t>(j));
+  int side = 0;
+  std::int32_t best = -1;
+  for (std::int32_t x : ids) {
+    rows.back() = x;
+    const int o = orient(axes.data(), j, v0, rows);  // the side of F_{j-1}
+    if (o == 0) {
+      // x on F_{j-1}: G + x is F_{j-1} itself in the rotation plane, hence supporting, unless x
+      // lies in G, which it does exactly when every j x j minor over the first j+1 axes vanishes.
+      for (int c = 0; c < j; ++c) {
+        std::size_t w = 0;
+        for (int i = 0; i <= j; ++i)
+          if (i != c) without[w++] = axes[static_cast<std::size_t>(i)];
+        if (orient(without.data(), j, v0, rows) != 0) return x;
+      }
+      continue;
+    }
+    if (side == 0) side = o;
+    if (o != side) throw std::logic_error("gift wrapping: the previous hyperplane is not supporting");
+    if (best < 0) {
+      best = x;
+      continue;
+    }
+    // All candidates lie strictly on one side of F_{j-1}, within less than half a turn: the
+    // rotation order is the orientation of (G, best, x) in the first j+1 axes.
+    rotation_rows[static_cast<std::size_t>(j - 1)] = best;
+    rotation_rows[static_cast<std::size_t>(j)] = x;
+    if (side * orient(axes.data(), j + 1, v0, rotation_rows) > 0) best = x;
+  }
+  return best;
+}
+
+Wrapper::Support Wrapper::supporting_facet(const Ids& ids, const Axes& axes) {
+  const int k = static_cast<int>(axes.size());
+  Ids found{lexicographic_minimum(ids, axes)};
+  for (int j = 1; j < k; ++j) {
+    const std::int32_t v = gift_wrap_step(ids, axes, found);
+    if (v < 0) throw_flat(points_);
+    found.push_back(v);
+  }
+  // The points on H = aff(found), and one point off it; H must support all of them.
+  Support support;
+  Ids on;
+  Ids rows(found.begin() + 1, found.end());
+  rows.push_back(-1);
+  int side = 0;
+  for (std::int32_t x : ids) {
+    rows.back() = x;
+    const int o = orient(axes.data(), k, found[0], rows);
+    if (o == 0) {
+      on.push_back(x);
+      continue;
+    }
+    if (side == 0) {
+      side = o;
+      support.off = x;
+    }
+    if (o != side) throw std::logic_error("gift wrapping: the hyperplane found is not supporting");
+  }
+  if (side == 0) throw_flat(points_);
+  if (static_cast<int>(on.size()) == k) {
+    support.facet = found;
+    return support;
+  }
+  // Several points on H: a Delaunay simplex among them, in k-1 axes onto which H projects
+  // one-to-one (those whose normal component, a (k-1)-minor, is nonzero).
+  rows.pop_back();
+  for (int drop = 0; drop < k; ++drop) {
+    Axes sub;
+    for (int i = 0; i < k; ++i)
+      if (i != drop) sub.push_back(axes[static_cast<std::size_t>(i)]);
+    if (orient(sub.data(), k - 1, found[0], rows) == 0) continue;
+    support.facet = simplex_in_flat(on, sub);
+    return support;
+  }
+  throw std::logic_error("gift wrapping: the hyperplane found has no normal");
+}
+
+Ids Wrapper::simplex_in_flat(const Ids& ids, const Axes& axes) {
+  const int k = static_cast<int>(axes.size());
+  if (k == 1) {
+    // Points on a line: the two smallest along it are consecutive, hence a Delaunay edge.
+    Ids sorted = ids;
+    std::partial_sort(sorted.begin(), sorted.begin() + 2, sorted.end(), [&](std::int32_t a, std::int32_t b) {
+      return points_.point(a)[axes[0]] < points_.point(b)[axes[0]];
+    });
+    return Ids{sorted[0], sorted[1]};
+  }
+  Ids simplex = supporting_facet(ids, axes).facet;
+  // The Delaunay point of that facet inside the flat, by an exact scan (the flat holds few
+  // points compared to the input: a face of the hull).
+  Ids rows(simplex.begin() + 1, simplex.end());
+  rows.push_back(-1);
+  std::vector<const double*> lifted(static_cast<std::size_t>(k + 1));
+  std::vector<std::int64_t> ranks(static_cast<std::size_t>(k + 2));
+  for (int i = 0; i < k; ++i) ranks[static_cast<std::size_t>(i)] = points_.rank[static_cast<std::size_t>(simplex[static_cast<std::size_t>(i)])];
+  for (int i = 1; i < k; ++i) lifted[static_cast<std::size_t>(i - 1)] = points_.point(simplex[static_cast<std::size_t>(i)]);
+  const geometry::Frame frame{d_, k, axes.data(), points_.point(simplex[0])};
+  int sigma = 0;
+  std::int32_t apex = -1;
+  for (std::int32_t x : ids) {
+    rows.back() = x;
+    const int o = orient(axes.data(), k, simplex[0], rows);
+    if (o == 0) continue;
+    if (sigma == 0) sigma = o;
+    if (apex < 0) {
+      apex = x;
+      continue;
+    }
+    lifted[static_cast<std::size_t>(k - 1)] = points_.point(apex);
+    lifted[static_cast<std::size_t>(k)] = points_.point(x);
+    ranks[static_cast<std::size_t>(k)] = points_.rank[static_cast<std::size_t>(apex)];
+    ranks[static_cast<std::size_t>(k + 1)] = points_.rank[static_cast<std::size_t>(x)];
+    if (sigma * geometry::lifted_sign_perturbed(frame, lifted.data(), ranks.data()) < 0) apex = x;
+  }
+  if (apex < 0) throw std::logic_error("first facet: a flat without a point off its facet");
+  simplex.push_back(apex);
+  return simplex;
+}
+
+}  // namespace
+
+FirstFacet find_first_facet(const PointStore& points) {
+  Ids all(static_cast<std::size_t>(points.size));
+  std::iota(all.begin(), all.end(), 0);
+  Axes axes(static_cast<std::size_t>(points.dim));
+  std::iota(axes.begin(), axes.end(), 0);
+  Wrapper wrapper(points);
+  Wrapper::Support support = wrapper.supporting_facet(all, axes);
+  FirstFacet first;
+  first.ids = support.facet;
+  std::sort(first.ids.begin(), first.ids.end());
+  std::vector<const double*> rows;
+  for (std::size_t i = 1; i < first.ids.size(); ++i) rows.push_back(points.point(first.ids[i]));
+  rows.push_back(points.point(support.off));
+  const geometry::Frame frame{points.dim, points.dim, nullptr, points.point(first.ids[0])};
+  first.sigma = geometry::orientation(frame, rows.data());
+  if (first.sigma == 0) throw std::logic_error("first facet: the interior point is on the facet");
+  return first;
+}
+
+}  // namespace drange::engine

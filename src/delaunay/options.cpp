@@ -1,0 +1,34 @@
+// delaunay/options.cpp: the named search variants and the statistics line.
+#include <cstdio>
+#include <string>
+
+#include "drange/delaunay.hpp"
+#include "drange/errors.hpp"
+
+namespace drange {
+
+SearchOptions search_variant(const std::string& name) {
+  if (name == "full") return SearchOptions{true, true, true};
+  if (name == "scan") return SearchOptions{false, false, false};
+  if (name == "kdtree") return SearchOptions{true, false, false};
+  if (name == "no-prune") return SearchOptions{true, false, true};
+  if (name == "no-order") return SearchOptions{true, true, false};
+  throw UsageError("unknown search variant '" + name + "' (expected one of: " + search_variant_names() + ")");
+}
+
+const char* search_variant_names() { return "full, scan, kdtree, no-prune, no-order"; }
+
+std::string Statistics::summary() const {
+  char line[640];
+  std::snprintf(line, sizeof line,
+                "points=%zu distinct=%zu simplices=%zu hull_facets=%zu calls_per_simplex=%.2f "
+                "tested_per_simplex=%.2f candidates_per_simplex=%.2f exact_fallbacks=%zu max_open_facets=%zu "
+                "time_kdtree=%.3fs time_first_facet=%.3fs time_search=%.3fs time_total=%.3fs peak_rss=%.1fMiB",
+                points, distinct_points, simplices, hull_facets, calls_per_simplex(),
+                simplices ? double(points_tested) / double(simplices) : 0.0,
+                simplices ? double(candidates) / double(simplices) : 0.0, exact_fallbacks, max_open_facets,
+                seconds_kdtree, seconds_first_facet, seconds_search, seconds_total, double(peak_rss_bytes) / (1 << 20));
+  return line;
+}
+
+}  // namespace drange

@@ -1,0 +1,26 @@
+// delaunay/point_store.hpp: the engine's own numbering of the distinct input points.
+//
+// Point ids are positions in kd-tree order (so that a leaf's points are contiguous); each id
+// knows its input index and its rank in the lexicographic order of coordinates, which is what
+// the symbolic perturbation uses, so that the result does not depend on the input order.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "spatial/kdtree.hpp"
+
+namespace drange::engine {
+
+struct PointStore {
+  int dim = 0;
+  std::int32_t size = 0;
+  std::vector<double> coords;              // size * dim, in id order
+  std::vector<std::int64_t> rank;          // lexicographic rank of each id
+  std::vector<std::int64_t> input_index;   // input index of each id
+  spatial::KdTree tree;                    // over the ids (empty for the scan variant? no: always built)
+
+  const double* point(std::int32_t id) const { return coords.data() + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim); }
+};
+
+}  // namespace drange::engine

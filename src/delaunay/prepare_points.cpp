@@ -1,0 +1,88 @@
+// delaunay/prepare_points.cpp: validation, duplicates, lexicographic ranks, kd-tree order.
+#include "delaunay/prepare_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+
+#include "drange/errors.hpp"
+
+namespace drange::engine {
+
+namespace {
+constexpr int kMaxDimension = 11;  // the filters' Laplace tables (geometry/minors.hpp) reach d+1 = 12 columns
+
+void check_input(PointsView input) {
+  if (input.dim < 2 || input.dim > kMaxDimension)
+    throw UsageError("dimension " + std::to_string(input.dim) + " is not supported (drange triangulates in 2 to " +
+                     std::to_string(kMaxDimension) + " dimensions)");
+  if (input.n >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw UsageError(std::to_string(input.n) + " points are more than drange's limit of 2^31 - 2");
+  for (std::size_t i = 0; i < input.n; ++i)
+    for (int k = 0; k < input.dim; ++k) {
+      const double x = input.point(i)[k];
+      if (!std::isfinite(x))
+        throw InputError("point " + std::to_string(i) + ", coordinate " + std::to_string(k) + " is " +
+                         (std::isnan(x) ? "NaN" : "infinite"));
+    }
+}
+}  // namespace
+
+PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates) {
+  check_input(input);
+  const int d = input.dim;
+  auto less = [&](std::int64_t a, std::int64_t b) {
+    const double* p = input.point(static_cast<std::size_t>(a));
+    const double* q = input.point(static_cast<std::size_t>(b));
+    for (int k = 0; k < d; ++k)
+      if (p[k] != q[k]) return p[k] < q[k];
+    return a < b;  // equal points: the first input index is the original
+  };
+  std::vector<std::int64_t> lex(input.n);
+  std::iota(lex.begin(), lex.end(), 0);
+  std::sort(lex.begin(), lex.end(), less);
+
+  // Distinct points in lexicographic order: their position is their rank.
+  std::vector<std::int64_t> distinct;
+  distinct.reserve(input.n);
+  duplicates.clear();
+  for (std::size_t i = 0; i < lex.size(); ++i) {
+    if (!distinct.empty() &&
+        std::equal(input.point(static_cast<std::size_t>(lex[i])), input.point(static_cast<std::size_t>(lex[i])) + d,
+                   input.point(static_cast<std::size_t>(distinct.back())))) {
+      duplicates.push_back(Duplicate{lex[i], distinct.back()});
+      continue;
+    }
+    distinct.push_back(lex[i]);
+  }
+  std::sort(duplicates.begin(), duplicates.end(), [](const Duplicate& a, const Duplicate& b) { return a.index < b.index; });
+  if (distinct.size() < static_cast<std::size_t>(d + 1))
+    throw DegenerateInputError("only " + std::to_string(distinct.size()) + " distinct point" +
+                               (distinct.size() == 1 ? "" : "s") + "; a triangulation in " + std::to_string(d) +
+                               " dimensions needs at least " + std::to_string(d + 1));
+
+  // The kd-tree over the distinct points (in rank order), then ids = tree positions.
+  PointStore store;
+  store.dim = d;
+  store.size = static_cast<std::int32_t>(distinct.size());
+  std::vector<double> by_rank(distinct.size() * static_cast<std::size_t>(d));
+  for (std::size_t r = 0; r < distinct.size(); ++r)
+    std::copy_n(input.point(static_cast<std::size_t>(distinct[r])), d, by_rank.begin() + static_cast<std::ptrdiff_t>(r * static_cast<std::size_t>(d)));
+  store.tree.build(by_rank.data(), store.size, d, leaf_size);
+  const std::vector<std::int32_t>& order = store.tree.order();
+  store.coords.resize(by_rank.size());
+  store.rank.resize(distinct.size());
+  store.input_index.resize(distinct.size());
+  for (std::size_t id = 0; id < order.size(); ++id) {
+    const auto r = static_cast<std::size_t>(order[id]);
+    std::copy_n(by_rank.begin() + static_cast<std::ptrdiff_t>(r * static_cast<std::size_t>(d)), d,
+                store.coords.begin() + static_cast<std::ptrdiff_t>(id * static_cast<std::size_t>(d)));
+    store.rank[id] = static_cast<std::int64_t>(r);
+    store.input_index[id] = distinct[r];
+  }
+  return store;
+}
+
+}  // namespace drange::engine

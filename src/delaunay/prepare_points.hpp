@@ -1,0 +1,16 @@
+// delaunay/prepare_points.hpp: from the caller's points to the engine's PointStore.
+#pragma once
+
+#include <vector>
+
+#include "delaunay/point_store.hpp"
+#include "drange/delaunay.hpp"
+
+namespace drange::engine {
+
+// Checks the input (dimension, finite coordinates; throws InputError/UsageError), finds exact
+// duplicates (reported, left out), ranks the distinct points lexicographically and stores them
+// in kd-tree order. Throws DegenerateInputError with fewer than d+1 distinct points.
+PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates);
+
+}  // namespace drange::engine

@@ -1,0 +1,45 @@
+// geometry/error_bound.hpp: the forward error bound that every floating-point filter uses.
+//
+// A polynomial evaluated in IEEE double arithmetic along a fixed expression tree, with at most
+// n roundings on any path from an input to the result, has an absolute error of at most
+// gamma(n) * P, where P is the same tree evaluated on the absolute values of the inputs with
+// every subtraction turned into an addition, and gamma(n) = n u / (1 - n u), u = 2^-53
+// (Higham, "Accuracy and Stability of Numerical Algorithms", 2nd ed., section 3.1).
+// P is itself computed in floating point; its own relative error is below gamma(n) too, which
+// the safety factor below absorbs. Underflow voids the model: the filters treat tiny
+// magnitudes as undecided and let the exact code decide.
+#pragma once
+
+#include <cmath>
+
+namespace drange::geometry {
+
+constexpr double kUnitRoundoff = 0x1p-53;
+// Below this magnitude of P a filter does not decide (denormals and underflow are possible).
+constexpr double kFilterUnderflow = 0x1p-900;
+// Above it, overflow is possible in the evaluation.
+constexpr double kFilterOverflow = 0x1p+900;
+
+constexpr double gamma_bound(int n) {
+  return (1.0 + 1e-6) * (n * kUnitRoundoff) / (1.0 - n * kUnitRoundoff) * (1.0 + (n + 1) * kUnitRoundoff);
+}
+
+// Roundings on any path of the Laplace expansion of a k x k determinant whose entries carry up
+// to `entry_roundings` roundings each: k products of entries, the expansion's own products and
+// the sums along each row (at most k terms).
+constexpr int laplace_roundings(int k, int entry_roundings) { return k * entry_roundings + k * (k + 2); }
+
+// Roundings in an entry of a relative lifted row in `dim` ambient dimensions: the differences
+// (1), the squares (1) and the sum of dim squares (dim - 1).
+constexpr int lifted_entry_roundings(int dim) { return dim + 1; }
+
+// The sign of `value` if the bound proves it, else 0 (undecided).
+inline int certified_sign(double value, double abs_tree, int roundings) {
+  if (!(abs_tree > kFilterUnderflow && abs_tree < kFilterOverflow)) return 0;  // also catches NaN
+  const double bound = gamma_bound(roundings) * abs_tree;
+  if (value > bound) return 1;
+  if (value < -bound) return -1;
+  return 0;
+}
+
+}  // namespace drange::geometry

@@ -1,0 +1,33 @@
+// geometry/exact_matrix.hpp: exact determinants of matrices built from double coordinates.
+//
+// Every finite double is m * 2^e with an integer m. Scaling all coordinates that enter one
+// determinant by a common power of two makes them integers, so differences, squared norms and
+// the determinant itself are computed exactly with GMP integers (Bareiss' fraction-free
+// elimination, every division exact).
+#pragma once
+
+#include <gmpxx.h>
+
+#include <vector>
+
+namespace drange::geometry {
+
+// Scales a set of doubles to integers by one common power of two: integer(x) = x * 2^-shift.
+class IntegerScale {
+ public:
+  // `values` are every coordinate that will be converted; finite.
+  void include(double x);
+  mpz_class integer(double x) const;
+  long shift() const { return shift_; }
+
+ private:
+  long shift_ = 0;
+  bool any_ = false;
+};
+
+// Sign of the determinant of the n x n integer matrix a (row-major); a is destroyed.
+int bareiss_sign(std::vector<mpz_class>& a, int n);
+// The determinant itself; a is destroyed.
+mpz_class bareiss_determinant(std::vector<mpz_class>& a, int n);
+
+}  // namespace drange::geometry

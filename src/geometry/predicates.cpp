@@ -1,0 +1,160 @@
+// geometry/predicates.cpp: orientation and lifted (in-sphere) determinants, filtered then
+// exact, and the symbolic perturbation that breaks lifted ties.
+#include "geometry/predicates.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+#include <vector>
+
+#include "geometry/error_bound.hpp"
+#include "geometry/exact.hpp"
+#include "geometry/exact_matrix.hpp"
+#include "geometry/minors.hpp"
+
+namespace drange::geometry {
+namespace {
+
+thread_local std::uint64_t exact_count = 0;
+
+double squared_distance(int dim, const double* p, const double* q) {
+  double s = 0.0;
+  for (int c = 0; c < dim; ++c) s += (p[c] - q[c]) * (p[c] - q[c]);
+  return s;
+}
+
+// The filter: the determinant of the rows built by `fill_row`, certified or 0.
+template <class FillRow>
+int filtered_sign(int n, int entry_roundings, FillRow fill_row) {
+  if (n > SubsetTable::kMaxColumns) return 0;
+  MinorTable minors(n);
+  std::vector<double> row(static_cast<std::size_t>(n));
+  for (int r = 0; r < n; ++r) {
+    fill_row(r, row.data());
+    minors.set_row(r, row.data());
+  }
+  const std::uint32_t all = (std::uint32_t{1} << n) - 1;
+  return certified_sign(minors.minor(all), minors.abs_minor(all), laplace_roundings(n, entry_roundings));
+}
+
+IntegerScale scale_of(int dim, const double* base, const double* const* points, int count) {
+  IntegerScale scale;
+  for (int c = 0; c < dim; ++c) scale.include(base[c]);
+  for (int i = 0; i < count; ++i)
+    for (int c = 0; c < dim; ++c) scale.include(points[i][c]);
+  return scale;
+}
+
+int exact_orientation(const Frame& f, const double* const* points) {
+  ++exact_count;
+  const IntegerScale scale = scale_of(f.dim, f.base, points, f.k);
+  std::vector<mpz_class> a(static_cast<std::size_t>(f.k * f.k));
+  for (int r = 0; r < f.k; ++r)
+    for (int c = 0; c < f.k; ++c)
+      a[static_cast<std::size_t>(r * f.k + c)] = scale.integer(points[r][f.axis(c)]) - scale.integer(f.base[f.axis(c)]);
+  return bareiss_sign(a, f.k);
+}
+
+int exact_lifted_sign(const Frame& f, const double* const* points) {
+  ++exact_count;
+  const int n = f.k + 1;
+  const IntegerScale scale = scale_of(f.dim, f.base, points, n);
+  std::vector<mpz_class> base(static_cast<std::size_t>(f.dim));
+  for (int c = 0; c < f.dim; ++c) base[static_cast<std::size_t>(c)] = scale.integer(f.base[c]);
+  std::vector<mpz_class> a(static_cast<std::size_t>(n * n));
+  std::vector<mpz_class> delta(static_cast<std::size_t>(f.dim));
+  for (int r = 0; r < n; ++r) {
+    mpz_class lift = 0;
+    for (int c = 0; c < f.dim; ++c) {
+      delta[static_cast<std::size_t>(c)] = scale.integer(points[r][c]) - base[static_cast<std::size_t>(c)];
+      lift += delta[static_cast<std::size_t>(c)] * delta[static_cast<std::size_t>(c)];
+    }
+    for (int c = 0; c < f.k; ++c) a[static_cast<std::size_t>(r * n + c)] = delta[static_cast<std::size_t>(f.axis(c))];
+    a[static_cast<std::size_t>(r * n + f.k)] = lift;
+  }
+  return bareiss_sign(a, n);
+}
+
+}  // namespace
+
+int orientation(const Frame& f, const double* const* points) {
+  const int s = filtered_sign(f.k, 1, [&](int r, double* row) {
+    for (int c = 0; c < f.k; ++c) row[c] = points[r][f.axis(c)] - f.base[f.axis(c)];
+  });
+  return s != 0 ? s : exact_orientation(f, points);
+}
+
+int lifted_sign(const Frame& f, const double* const* points) {
+  const int s = filtered_sign(f.k + 1, lifted_entry_roundings(f.dim), [&](int r, double* row) {
+    for (int c = 0; c < f.k; ++c) row[c] = points[r][f.axis(c)] - f.base[f.axis(c)];
+    row[f.k] = squared_distance(f.dim, points[r], f.base);
+  });
+  return s != 0 ? s : exact_lifted_sign(f, points);
+}
+
+int lifted_sign_perturbed(const Frame& f, const double* const* points, const std::int64_t* ranks) {
+  const int unperturbed = lifted_sign(f, points);
+  if (unperturbed != 0) return unperturbed;
+  // The relative determinant I equals (-1)^(k+1) det M, where M has the homogeneous rows
+  // [x_i, |x_i|^2, 1] of (base, p_1, ..., p_{k+1}). Perturbing the lifts by eps_i makes
+  // det M(eps) = det M + sum_i eps_i (-1)^(i+k) H_i, with H_i the homogeneous orientation of the
+  // other k+1 points. det M = 0 here, so the most perturbed point whose H_i is nonzero decides:
+  // sign I(eps) = -(-1)^i (-1)^k sign(orientation of the others, based at the first of them).
+  const int count = f.k + 2;
+  std::vector<const double*> all(static_cast<std::size_t>(count));
+  all[0] = f.base;
+  for (int i = 1; i < count; ++i) all[static_cast<std::size_t>(i)] = points[i - 1];
+  std::vector<int> order(static_cast<std::size_t>(count));
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return ranks[a] > ranks[b]; });
+  std::vector<const double*> others;
+  for (int i : order) {
+    others.clear();
+    for (int j = 0; j < count; ++j)
+      if (j != i) others.push_back(all[static_cast<std::size_t>(j)]);
+    Frame g = f;
+    g.base = others[0];
+    const int h = orientation(g, others.data() + 1);
+    if (h != 0) {
+      const int parity = ((i + f.k) & 1) ? -1 : 1;
+      return -parity * h;
+    }
+  }
+  // Only reachable when the k+2 points do not span the k-flat: a caller's bug.
+  throw std::logic_error("lifted_sign_perturbed: the points do not span their flat");
+}
+
+int simplex_orientation(int dim, const double* const* simplex) {
+  const Frame f{dim, dim, nullptr, simplex[0]};
+  return orientation(f, simplex + 1);
+}
+
+int in_sphere(int dim, const double* const* simplex, const double* q) {
+  const int o = simplex_orientation(dim, simplex);
+  if (o == 0) throw std::invalid_argument("in_sphere: the simplex is flat");
+  std::vector<const double*> rows(simplex + 1, simplex + 1 + dim);
+  rows.push_back(q);
+  const Frame f{dim, dim, nullptr, simplex[0]};
+  // With O(simplex) > 0, q is strictly inside exactly when the lifted determinant is negative.
+  return -lifted_sign(f, rows.data()) * o;
+}
+
+std::uint64_t exact_evaluations() { return exact_count; }
+
+mpq_class exact_rational(double x) { return mpq_class(x); }
+
+mpq_class simplex_volume_times_factorial(int dim, const double* const* simplex) {
+  const IntegerScale scale = scale_of(dim, simplex[0], simplex + 1, dim);
+  std::vector<mpz_class> a(static_cast<std::size_t>(dim * dim));
+  for (int r = 0; r < dim; ++r)
+    for (int c = 0; c < dim; ++c)
+      a[static_cast<std::size_t>(r * dim + c)] = scale.integer(simplex[r + 1][c]) - scale.integer(simplex[0][c]);
+  mpq_class det(bareiss_determinant(a, dim));
+  // Every entry was scaled by 2^-shift, the determinant by 2^(-shift * dim).
+  const long exponent = scale.shift() * dim;
+  if (exponent >= 0) mpq_mul_2exp(det.get_mpq_t(), det.get_mpq_t(), static_cast<mp_bitcnt_t>(exponent));
+  else mpq_div_2exp(det.get_mpq_t(), det.get_mpq_t(), static_cast<mp_bitcnt_t>(-exponent));
+  return det;
+}
+
+}  // namespace drange::geometry
