@@ -1,0 +1,360 @@
+// Tests of the engine (src/delaunay, src/spatial): brute-force oracles on tiny inputs, the
+// exact validator on every generated family, degenerate families, permutation invariance,
+// duplicates, the search variants, adjacency, and every error with its message.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "drange/check.hpp"
+#include "drange/delaunay.hpp"
+#include "drange/errors.hpp"
+#include "drange/generate.hpp"
+#include "geometry/predicates.hpp"
+
+namespace {
+
+using drange::Distribution;
+using drange::PointCloud;
+using drange::Triangulation;
+using Simplex = std::vector<std::int32_t>;
+
+PointCloud cloud(int d, std::vector<double> coords) { return PointCloud{d, std::move(coords)}; }
+
+std::set<Simplex> canonical(const Triangulation& t) {
+  std::set<Simplex> out;
+  for (std::size_t s = 0; s < t.size(); ++s) {
+    Simplex v(t.simplex(s), t.simplex(s) + t.dim + 1);
+    std::sort(v.begin(), v.end());
+    out.insert(v);
+  }
+  return out;
+}
+
+// Simplices as sets of coordinate tuples: comparable across permutations and duplicates.
+std::set<std::vector<std::vector<double>>> geometric(const Triangulation& t, const PointCloud& points) {
+  std::set<std::vector<std::vector<double>>> out;
+  for (std::size_t s = 0; s < t.size(); ++s) {
+    std::vector<std::vector<double>> v;
+    for (int k = 0; k <= t.dim; ++k) {
+      const double* p = points.point(static_cast<std::size_t>(t.simplex(s)[k]));
+      v.emplace_back(p, p + t.dim);
+    }
+    std::sort(v.begin(), v.end());
+    out.insert(v);
+  }
+  return out;
+}
+
+// The perturbed Delaunay triangulation by definition: every (d+1)-subset of distinct points,
+// with nonzero volume, such that no other point is inside its circumsphere under the
+// symbolic perturbation (ranks: lexicographic order). O(n^(d+2)); for tiny inputs only.
+// It shares the perturbed predicate with the engine, nothing else: not the search, the
+// kd-tree, the first facet or the facet table.
+std::set<Simplex> perturbed_oracle(const PointCloud& points) {
+  const int d = points.dim;
+  const auto n = static_cast<std::int32_t>(points.size());
+  std::vector<std::int32_t> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
+    return std::lexicographical_compare(points.point(a), points.point(a) + d, points.point(b), points.point(b) + d);
+  });
+  std::vector<std::int64_t> rank(static_cast<std::size_t>(n));
+  for (std::int32_t r = 0; r < n; ++r) rank[static_cast<std::size_t>(order[static_cast<std::size_t>(r)])] = r;
+  std::set<Simplex> out;
+  Simplex subset(static_cast<std::size_t>(d + 1));
+  std::function<void(int, std::int32_t)> choose = [&](int position, std::int32_t from) {
+    if (position == d + 1) {
+      std::vector<const double*> p;
+      for (std::int32_t i : subset) p.push_back(points.point(static_cast<std::size_t>(i)));
+      const int o = drange::geometry::simplex_orientation(d, p.data());
+      if (o == 0) return;
+      const drange::geometry::Frame frame{d, d, nullptr, p[0]};
+      std::vector<const double*> rows(p.begin() + 1, p.end());
+      rows.push_back(nullptr);
+      std::vector<std::int64_t> ranks;
+      for (std::int32_t i : subset) ranks.push_back(rank[static_cast<std::size_t>(i)]);
+      ranks.push_back(0);
+      for (std::int32_t q = 0; q < n; ++q) {
+        if (std::find(subset.begin(), subset.end(), q) != subset.end()) continue;
+        rows.back() = points.point(static_cast<std::size_t>(q));
+        ranks.back() = rank[static_cast<std::size_t>(q)];
+        if (o * drange::geometry::lifted_sign_perturbed(frame, rows.data(), ranks.data()) < 0) return;  // inside
+      }
+      out.insert(subset);
+      return;
+    }
+    for (std::int32_t i = from; i < n; ++i) {
+      subset[static_cast<std::size_t>(position)] = i;
+      choose(position + 1, i + 1);
+    }
+  };
+  choose(0, 0);
+  return out;
+}
+
+PointCloud grid(int d, int k) {
+  PointCloud g{d, {}};
+  int total = 1;
+  for (int i = 0; i < d; ++i) total *= k;
+  for (int t = 0; t < total; ++t)
+    for (int i = 0, r = t; i < d; ++i, r /= k) g.coords.push_back(r % k);
+  return g;
+}
+
+void expect_valid(const PointCloud& points, const Triangulation& t, const std::string& what) {
+  const drange::CheckReport report = drange::check_triangulation(points, t.simplices);
+  EXPECT_TRUE(report.valid) << what << ": " << (report.problems.empty() ? "" : report.problems.front());
+  EXPECT_EQ(t.stats.simplices, t.size());
+}
+
+// Every simplex positive; neighbour k is opposite vertex k, shares the other d vertices, and
+// points back; -1 exactly on hull facets.
+void expect_consistent_adjacency(const PointCloud& points, const Triangulation& t) {
+  const int d = t.dim;
+  ASSERT_EQ(t.neighbors.size(), t.simplices.size());
+  std::size_t hull = 0;
+  for (std::size_t s = 0; s < t.size(); ++s) {
+    std::vector<const double*> p;
+    for (int k = 0; k <= d; ++k) p.push_back(points.point(static_cast<std::size_t>(t.simplex(s)[k])));
+    ASSERT_GT(drange::geometry::simplex_orientation(d, p.data()), 0) << "simplex " << s << " not positive";
+    for (int k = 0; k <= d; ++k) {
+      const std::int32_t nb = t.neighbors[s * static_cast<std::size_t>(d + 1) + static_cast<std::size_t>(k)];
+      if (nb < 0) {
+        ++hull;
+        continue;
+      }
+      const std::int32_t* mine = t.simplex(s);
+      const std::int32_t* theirs = t.simplex(static_cast<std::size_t>(nb));
+      int shared = 0;
+      for (int i = 0; i <= d; ++i)
+        if (i != k && std::find(theirs, theirs + d + 1, mine[i]) != theirs + d + 1) ++shared;
+      EXPECT_EQ(shared, d) << "simplex " << s << " neighbour " << k;
+      EXPECT_EQ(std::find(theirs, theirs + d + 1, mine[k]), theirs + d + 1) << "neighbour holds the opposite vertex";
+      const std::int32_t* back = &t.neighbors[static_cast<std::size_t>(nb) * static_cast<std::size_t>(d + 1)];
+      EXPECT_NE(std::find(back, back + d + 1, static_cast<std::int32_t>(s)), back + d + 1) << "not symmetric";
+    }
+  }
+  EXPECT_EQ(hull, t.stats.hull_facets);
+}
+
+TEST(DelaunayOracle, RandomTinyInputsMatchBruteForce) {
+  for (int d = 2; d <= 5; ++d)
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+      const std::size_t n = static_cast<std::size_t>(d + 4 + (seed % 5));
+      const PointCloud points = drange::generate_points(Distribution::Uniform, n, d, seed);
+      const Triangulation t = drange::delaunay(points);
+      EXPECT_EQ(canonical(t), perturbed_oracle(points)) << "d=" << d << " seed=" << seed;
+    }
+}
+
+TEST(DelaunayOracle, DegenerateTinyInputsMatchPerturbedBruteForce) {
+  std::vector<std::pair<std::string, PointCloud>> cases = {
+      {"grid 4x4", grid(2, 4)},
+      {"grid 3x3x3", grid(3, 3)},
+      {"grid 2^4", grid(4, 2)},
+      {"integer circle", cloud(2, {5, 0, -5, 0, 0, 5, 0, -5, 3, 4, -3, 4, 3, -4, -3, -4, 4, 3, -4, 3, 4, -3, -4, -3})},
+      {"square and centre", cloud(2, {0, 0, 1, 0, 0, 1, 1, 1, 0.5, 0.5})},
+      {"cube corners and centre", cloud(3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1, 0.5, 0.5, 0.5})},
+      {"collinear on the hull", cloud(2, {0, 0, 1, 0, 2, 0, 3, 0, 1.5, 1, 1.5, -2})},
+  };
+  for (const auto& [name, points] : cases) {
+    const Triangulation t = drange::delaunay(points);
+    EXPECT_EQ(canonical(t), perturbed_oracle(points)) << name;
+    expect_valid(points, t, name);
+  }
+}
+
+struct Family {
+  Distribution distribution;
+  std::size_t n;
+};
+
+TEST(DelaunayValidator, EveryFamilyInDimensionsTwoToSix) {
+  const std::vector<Family> families = {{Distribution::Uniform, 0}, {Distribution::Ball, 0},   {Distribution::Sphere, 0},
+                                        {Distribution::Gaussian, 0}, {Distribution::Clustered, 0}, {Distribution::Grid, 0}};
+  const std::size_t sizes[] = {0, 0, 4000, 2000, 600, 200, 80};  // by d: sphere inputs cost O(n^2)
+  for (int d = 2; d <= 6; ++d)
+    for (const Family& f : families) {
+      const std::size_t n = sizes[d] / (f.distribution == Distribution::Sphere ? 2 : 1);
+      const PointCloud points = drange::generate_points(f.distribution, n, d, 77);
+      const Triangulation t = drange::delaunay(points);
+      const std::string what = "d=" + std::to_string(d) + " family=" + std::to_string(static_cast<int>(f.distribution));
+      expect_valid(points, t, what);
+      expect_consistent_adjacency(points, t);
+    }
+}
+
+TEST(DelaunayValidator, DimensionEight) {
+  const PointCloud points = drange::generate_points(Distribution::Uniform, 40, 8, 8);
+  const Triangulation t = drange::delaunay(points);
+  expect_valid(points, t, "d=8");
+  expect_consistent_adjacency(points, t);
+}
+
+TEST(DelaunayRobustness, HardFamilies) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<std::pair<std::string, PointCloud>> cases;
+  {
+    PointCloud c{3, {}};  // a circle in 3D and two poles
+    for (int i = 0; i < 24; ++i) c.coords.insert(c.coords.end(), {std::cos(i * M_PI / 12), std::sin(i * M_PI / 12), 0.0});
+    c.coords.insert(c.coords.end(), {0, 0, 1, 0, 0, -1});
+    cases.emplace_back("circle in 3D", c);
+  }
+  {
+    PointCloud c{3, {}};  // a hull face full of coplanar grid points
+    for (int i = 0; i < 1500; ++i) c.coords.insert(c.coords.end(), {u(rng), u(rng), u(rng)});
+    for (int i = 0; i < 300; ++i) c.coords.insert(c.coords.end(), {0.0, std::round(u(rng) * 20) / 20, std::round(u(rng) * 20) / 20});
+    cases.emplace_back("coplanar hull face", c);
+  }
+  {
+    PointCloud c{2, {}};  // huge offset
+    for (int i = 0; i < 2000; ++i) c.coords.insert(c.coords.end(), {1e9 + u(rng), 1e9 + u(rng)});
+    cases.emplace_back("offset 1e9", c);
+  }
+  {
+    PointCloud c{3, {}};  // a tiny cluster
+    for (int i = 0; i < 2000; ++i) c.coords.insert(c.coords.end(), {1e-9 * u(rng), 1e-9 * u(rng), 1e-9 * u(rng)});
+    cases.emplace_back("cluster 1e-9", c);
+  }
+  {
+    PointCloud c{2, {}};  // collinear subsets inside and on the hull
+    for (int i = 0; i < 400; ++i) c.coords.insert(c.coords.end(), {u(rng), u(rng)});
+    for (int i = 0; i <= 40; ++i) c.coords.insert(c.coords.end(), {i / 40.0, i / 40.0, i / 40.0, 0.0});
+    cases.emplace_back("collinear subsets", c);
+  }
+  {
+    PointCloud c{4, {}};  // 4D integer grid 5^4
+    c = grid(4, 5);
+    cases.emplace_back("grid 5^4", c);
+  }
+  for (const auto& [name, points] : cases) {
+    const Triangulation t = drange::delaunay(points);
+    expect_valid(points, t, name);
+    expect_consistent_adjacency(points, t);
+  }
+}
+
+TEST(DelaunayInvariance, PermutedInputGivesTheSameSimplices) {
+  std::mt19937_64 rng(11);
+  const std::vector<PointCloud> inputs = {drange::generate_points(Distribution::Uniform, 3000, 2, 3), grid(2, 25), grid(3, 7),
+                                          drange::generate_points(Distribution::Sphere, 300, 3, 4),
+                                          drange::generate_points(Distribution::Grid, 200, 4, 5)};
+  for (const PointCloud& points : inputs) {
+    const std::size_t n = points.size();
+    std::vector<std::size_t> perm(n);
+    std::iota(perm.begin(), perm.end(), 0);
+    std::shuffle(perm.begin(), perm.end(), rng);
+    PointCloud shuffled{points.dim, {}};
+    for (std::size_t i : perm) shuffled.coords.insert(shuffled.coords.end(), points.point(i), points.point(i) + points.dim);
+    EXPECT_EQ(geometric(drange::delaunay(points), points), geometric(drange::delaunay(shuffled), shuffled))
+        << "d=" << points.dim << " n=" << n;
+  }
+}
+
+TEST(DelaunayDuplicates, ReportedLeftOutAndHarmless) {
+  PointCloud points = drange::generate_points(Distribution::Uniform, 500, 3, 9);
+  PointCloud with_copies = points;
+  for (std::size_t i = 0; i < 50; ++i)  // point 500 + i copies point 7 * i
+    with_copies.coords.insert(with_copies.coords.end(), points.point(7 * i), points.point(7 * i) + 3);
+  with_copies.coords.insert(with_copies.coords.end(), points.point(0), points.point(0) + 3);  // a second copy of 0
+  const Triangulation t = drange::delaunay(with_copies);
+  ASSERT_EQ(t.duplicates.size(), 51u);
+  EXPECT_EQ(t.duplicates[3].index, 503);
+  EXPECT_EQ(t.duplicates[3].original, 21);
+  EXPECT_EQ(t.duplicates.back().index, 550);
+  EXPECT_EQ(t.duplicates.back().original, 0);
+  EXPECT_EQ(t.stats.distinct_points, 500u);
+  for (std::int32_t v : t.simplices) EXPECT_LT(v, 500) << "a duplicate was used as a vertex";
+  EXPECT_EQ(canonical(t), canonical(drange::delaunay(points)));
+  expect_valid(with_copies, t, "duplicates");
+}
+
+TEST(DelaunayVariants, EveryVariantGivesTheSameTriangulation) {
+  const std::vector<PointCloud> inputs = {drange::generate_points(Distribution::Uniform, 2000, 2, 21), grid(3, 6),
+                                          drange::generate_points(Distribution::Gaussian, 300, 4, 22)};
+  for (const PointCloud& points : inputs) {
+    const auto reference = canonical(drange::delaunay(points));
+    for (const char* name : {"scan", "kdtree", "no-prune", "no-order"}) {
+      drange::Options options;
+      options.search = drange::search_variant(name);
+      const Triangulation t = drange::delaunay(points, options);
+      EXPECT_EQ(canonical(t), reference) << name << " d=" << points.dim;
+      EXPECT_GT(t.stats.search_calls, 0u);
+    }
+  }
+  EXPECT_THROW(drange::search_variant("fast"), drange::UsageError);
+}
+
+TEST(DelaunayVariants, PruningAndOrderingReduceTheWork) {
+  const PointCloud points = drange::generate_points(Distribution::Uniform, 20000, 2, 23);
+  auto calls = [&](const char* name) {
+    drange::Options options;
+    options.search = drange::search_variant(name);
+    return drange::delaunay(points, options).stats.search_calls;
+  };
+  const auto full = calls("full");
+  EXPECT_LT(full, calls("no-prune"));
+  EXPECT_LT(full, calls("kdtree"));
+  EXPECT_LT(full, calls("no-order"));
+}
+
+TEST(DelaunayStatistics, CountsAreConsistent) {
+  const PointCloud points = drange::generate_points(Distribution::Uniform, 10000, 2, 31);
+  const Triangulation t = drange::delaunay(points);
+  const drange::Statistics& s = t.stats;
+  EXPECT_EQ(s.points, 10000u);
+  EXPECT_EQ(s.distinct_points, 10000u);
+  EXPECT_EQ(s.simplices, t.size());
+  // Euler in the plane: triangles = 2n - 2 - h for n points, h of them on the hull.
+  EXPECT_EQ(s.simplices, 2 * s.points - 2 - s.hull_facets);
+  EXPECT_GT(s.calls_per_simplex(), 1.0);
+  EXPECT_LT(s.calls_per_simplex(), 100.0);
+  EXPECT_GT(s.peak_rss_bytes, 0u);
+  EXPECT_GE(s.seconds_total, s.seconds_search);
+  EXPECT_NE(s.summary().find("simplices=" + std::to_string(t.size())), std::string::npos);
+}
+
+TEST(DelaunayNeighbors, CanBeLeftOut) {
+  const PointCloud points = drange::generate_points(Distribution::Uniform, 100, 2, 41);
+  drange::Options options;
+  options.compute_neighbors = false;
+  EXPECT_TRUE(drange::delaunay(points, options).neighbors.empty());
+}
+
+template <class E>
+std::string message_of(const PointCloud& points) {
+  try {
+    drange::delaunay(points);
+  } catch (const E& e) {
+    return e.what();
+  }
+  return "no exception";
+}
+
+TEST(DelaunayErrors, NameTheProblem) {
+  EXPECT_EQ(message_of<drange::DegenerateInputError>(cloud(2, {0, 0, 1, 1, 0, 0, 1, 1})),
+            "only 2 distinct points; a triangulation in 2 dimensions needs at least 3");
+  EXPECT_EQ(message_of<drange::DegenerateInputError>(cloud(2, {0, 0, 1, 1, 2, 2, 3, 3})),
+            "all 4 distinct points lie in an affine subspace of dimension 1; a Delaunay triangulation in 2 dimensions "
+            "needs points that span 2 dimensions");
+  EXPECT_EQ(message_of<drange::DegenerateInputError>(cloud(3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 3, 0})),
+            "all 5 distinct points lie in an affine subspace of dimension 2; a Delaunay triangulation in 3 dimensions "
+            "needs points that span 3 dimensions");
+  EXPECT_EQ(message_of<drange::InputError>(cloud(2, {0, 0, 1, 0, 0, std::nan("")})), "point 2, coordinate 1 is NaN");
+  EXPECT_EQ(message_of<drange::InputError>(cloud(2, {0, 0, HUGE_VAL, 0, 0, 1})), "point 1, coordinate 0 is infinite");
+  EXPECT_EQ(message_of<drange::UsageError>(cloud(1, {0, 1, 2})),
+            "dimension 1 is not supported (drange triangulates in 2 to 11 dimensions)");
+  EXPECT_EQ(message_of<drange::DegenerateInputError>(cloud(3, {})),
+            "only 0 distinct points; a triangulation in 3 dimensions needs at least 4");
+}
+
+}  // namespace
