@@ -4,7 +4,7 @@
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-packages=(g++ cmake make libgmp-dev libgtest-dev qhull-bin libcgal-dev libboost-dev)
+packages=(g++ cmake make libgmp-dev libgtest-dev qhull-bin libcgal-dev libeigen3-dev libboost-dev)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -78,7 +78,7 @@ struct Triangulation {
 // Computes the Delaunay triangulation of the points. Exact on every input: ties between
 // cospherical points are broken by a symbolic perturbation that depends only on the
 // coordinates, so any permutation of the input gives the same simplices.
-// Throws InputError (NaN/infinite coordinate, bad dimension) or DegenerateInputError
+// Throws InputError (NaN/infinite coordinate, a dimension outside 2..11, 2^31 points or more) or DegenerateInputError
 // (fewer than d+1 distinct points, or all points in one hyperplane).
 Triangulation delaunay(PointsView points, const Options& options = {});
 

@@ -10,7 +10,7 @@
 namespace drange {
 
 enum class Distribution {
-  Uniform,    // uniform in the unit cube [0,1]^d
+  Uniform,    // uniform in the unit cube [0,1)^d
   Ball,       // uniform in the unit ball
   Sphere,     // uniform on the unit sphere (every point cospherical: a degenerate input)
   Gaussian,   // standard normal in every coordinate

@@ -16,10 +16,10 @@ constexpr int kMaxDimension = 11;  // the filters' Laplace tables (geometry/mino
 
 void check_input(PointsView input) {
   if (input.dim < 2 || input.dim > kMaxDimension)
-    throw UsageError("dimension " + std::to_string(input.dim) + " is not supported (drange triangulates in 2 to " +
+    throw InputError("dimension " + std::to_string(input.dim) + " is not supported (drange triangulates in 2 to " +
                      std::to_string(kMaxDimension) + " dimensions)");
   if (input.n >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-    throw UsageError(std::to_string(input.n) + " points are more than drange's limit of 2^31 - 2");
+    throw InputError(std::to_string(input.n) + " points are more than drange's limit of 2^31 - 2");
   for (std::size_t i = 0; i < input.n; ++i)
     for (int k = 0; k < input.dim; ++k) {
       const double x = input.point(i)[k];

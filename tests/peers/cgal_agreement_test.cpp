@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "drange/delaunay.hpp"
@@ -82,6 +83,13 @@ struct Case {
   int d;
 };
 
+std::string describe(const Case& c) {
+  static const char* const names[] = {"uniform", "ball", "sphere", "gaussian", "clustered", "grid"};
+  return std::string(names[static_cast<int>(c.distribution)]) + "_d" + std::to_string(c.d) + "_n" + std::to_string(c.n);
+}
+std::string case_name(const ::testing::TestParamInfo<Case>& info) { return describe(info.param); }
+void PrintTo(const Case& c, std::ostream* os) { *os << describe(c); }
+
 class CgalAgreement : public ::testing::TestWithParam<Case> {};
 
 TEST_P(CgalAgreement, SameSimplicesAsCgalDelaunayTriangulation) {
@@ -97,6 +105,7 @@ INSTANTIATE_TEST_SUITE_P(
     RandomInputs, CgalAgreement,
     ::testing::Values(Case{drange::Distribution::Uniform, 4000, 2}, Case{drange::Distribution::Clustered, 4000, 2},
                       Case{drange::Distribution::Uniform, 20000, 3}, Case{drange::Distribution::Gaussian, 3000, 3},
-                      Case{drange::Distribution::Uniform, 1000, 4}, Case{drange::Distribution::Ball, 400, 5}));
+                      Case{drange::Distribution::Uniform, 1000, 4}, Case{drange::Distribution::Ball, 400, 5}),
+    case_name);
 
 }  // namespace

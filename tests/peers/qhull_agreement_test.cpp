@@ -37,6 +37,13 @@ struct Case {
   int d;
 };
 
+std::string describe(const Case& c) {
+  static const char* const names[] = {"uniform", "ball", "sphere", "gaussian", "clustered", "grid"};
+  return std::string(names[static_cast<int>(c.distribution)]) + "_d" + std::to_string(c.d) + "_n" + std::to_string(c.n);
+}
+std::string case_name(const ::testing::TestParamInfo<Case>& info) { return describe(info.param); }
+void PrintTo(const Case& c, std::ostream* os) { *os << describe(c); }
+
 class QhullAgreement : public ::testing::TestWithParam<Case> {};
 
 TEST_P(QhullAgreement, SameSimplicesAsQdelaunay) {
@@ -45,7 +52,7 @@ TEST_P(QhullAgreement, SameSimplicesAsQdelaunay) {
   const std::uint64_t seed = 1000 + c.n + static_cast<std::uint64_t>(c.d);
   const drange::PointCloud points = drange::generate_points(c.distribution, c.n, c.d, seed);
   const std::string dir = ::testing::TempDir();
-  const std::string in = dir + "qhull_in_" + std::to_string(c.d) + "_" + std::to_string(c.n) + ".txt";
+  const std::string in = dir + "qhull_in_" + describe(c) + ".txt";
   const std::string out = in + ".tri";
   drange::write_file_atomically(in, [&](std::ostream& o) { drange::write_points(o, points); });
   // Qt: triangulated output, as scipy uses; on points in general position it is the unique triangulation.
@@ -63,6 +70,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Case{drange::Distribution::Uniform, 5000, 2}, Case{drange::Distribution::Gaussian, 5000, 2},
                       Case{drange::Distribution::Uniform, 3000, 3}, Case{drange::Distribution::Ball, 3000, 3},
                       Case{drange::Distribution::Uniform, 800, 4}, Case{drange::Distribution::Uniform, 300, 5},
-                      Case{drange::Distribution::Gaussian, 120, 6}));
+                      Case{drange::Distribution::Gaussian, 120, 6}),
+    case_name);
 
 }  // namespace

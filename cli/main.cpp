@@ -1,0 +1,109 @@
+// cli/main.cpp: `drange`, the command-line front end. Dispatches to a command and turns the
+// library's typed exceptions into one message on standard error and a documented exit code
+// (exit_codes.hpp).
+#include <exception>
+#include <iostream>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "args.hpp"
+#include "commands.hpp"
+#include "drange/errors.hpp"
+#include "exit_codes.hpp"
+
+namespace drange::cli {
+namespace {
+
+struct Command {
+  const char* name;
+  int (*run)(const std::vector<std::string>& args);
+  std::string (*help)();
+};
+
+constexpr Command kCommands[] = {
+    {"delaunay", run_delaunay, delaunay_help},
+    {"check", run_check, check_help},
+    {"generate", run_generate, generate_help},
+};
+
+const Command* find_command(const std::string& name) {
+  for (const Command& command : kCommands) {
+    if (name == command.name) return &command;
+  }
+  return nullptr;
+}
+
+[[noreturn]] void unknown_command(const std::string& name) {
+  throw UsageError("unknown command '" + name + "' (expected delaunay, check, generate or help)");
+}
+
+// `drange help [COMMAND]`.
+int run_help(const std::vector<std::string>& args) {
+  if (args.empty()) {
+    std::cout << general_help();
+    return kExitSuccess;
+  }
+  if (args.size() > 1) throw UsageError("unexpected argument '" + args[1] + "'");
+  const Command* command = find_command(args[0]);
+  if (command == nullptr) unknown_command(args[0]);
+  std::cout << command->help();
+  return kExitSuccess;
+}
+
+// Runs the command line; `command_name` is set as soon as the command is known, for the hint
+// that follows a usage error.
+int dispatch(const std::vector<std::string>& args, std::string& command_name) {
+  if (args.empty()) {
+    std::cerr << general_help();
+    return kExitUsage;
+  }
+  const std::string& first = args[0];
+  if (first == "--help" || first == "-h") {
+    std::cout << general_help();
+    return kExitSuccess;
+  }
+  if (first == "--version") {
+    if (args.size() > 1) throw UsageError("unexpected argument '" + args[1] + "'");
+    std::cout << "drange " << kVersion << '\n';
+    return kExitSuccess;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (first == "help") return run_help(rest);
+  if (first.size() > 1 && first[0] == '-') throw UsageError("unknown option '" + first + "'");
+  const Command* command = find_command(first);
+  if (command == nullptr) unknown_command(first);
+  command_name = command->name;
+  if (asks_for_help(rest)) {
+    std::cout << command->help();
+    return kExitSuccess;
+  }
+  return command->run(rest);
+}
+
+}  // namespace
+}  // namespace drange::cli
+
+int main(int argc, char** argv) {
+  using namespace drange::cli;
+  std::string command_name;
+  try {
+    return dispatch(std::vector<std::string>(argv + 1, argv + argc), command_name);
+  } catch (const drange::UsageError& e) {
+    std::cerr << "drange: " << e.what() << "\nTry 'drange " << (command_name.empty() ? "" : command_name + " ")
+              << "--help'.\n";
+    return kExitUsage;
+  } catch (const drange::InputError& e) {
+    std::cerr << "drange: " << e.what() << '\n';
+    return kExitInput;
+  } catch (const drange::DegenerateInputError& e) {
+    std::cerr << "drange: " << e.what() << '\n';
+    return kExitDegenerate;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "drange: out of memory\n";
+    return kExitOutOfMemory;
+  } catch (const std::exception& e) {
+    std::cerr << "drange: internal error: " << e.what() << '\n';
+    return kExitInternal;
+  }
+}
