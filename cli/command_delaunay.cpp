@@ -1,5 +1,7 @@
 // cli/command_delaunay.cpp: `drange delaunay`, the triangulation of a point file, written in
 // the `qdelaunay i` layout so that scripts written for Qhull keep working.
+#include <unistd.h>
+
 #include <iostream>
 #include <string>
 #include <vector>
@@ -73,8 +75,10 @@ std::string delaunay_help() {
              "Usage: drange delaunay [INPUT] [OPTIONS]\n"
              "\n"
              "Computes the Delaunay triangulation of the points in INPUT (a file, or - for standard\n"
-             "input) and writes its simplices. Without INPUT, triangulates a demonstration set\n"
-             "(100000 uniform random points in 3D) and prints a summary of the run.\n"
+             "input) and writes its simplices. Without INPUT, reads standard input when points are\n"
+             "piped or redirected into it (drange delaunay < points.txt, as with qdelaunay);\n"
+             "otherwise triangulates a demonstration set (100000 uniform random points in 3D) and\n"
+             "prints a summary of the run.\n"
              "\n"
              "Options:\n"
              "  -o, --output FILE     where to write the simplices (default -, standard output)\n"
@@ -108,6 +112,10 @@ std::string delaunay_help() {
 int run_delaunay(const std::vector<std::string>& args) {
   const Arguments arguments = parse_arguments(args, kOptions);
   expect_positionals(arguments, {"INPUT"}, 0);
+  // Without INPUT, points piped or redirected into standard input are read, as qdelaunay does
+  // (`drange delaunay < points.txt`); a terminal or an empty stream gets the demonstration.
+  if (arguments.positionals.empty() && !isatty(STDIN_FILENO) && std::cin.peek() != std::char_traits<char>::eof())
+    return triangulate_file("-", arguments);
   if (arguments.positionals.empty()) {
     // The demonstration writes no files: an output option without INPUT is a mistake.
     for (const char* option : {"output", "neighbors"}) {

@@ -299,6 +299,10 @@ TEST(Cli, DelaunayFromStandardInputToStandardOutput) {
   EXPECT_EQ(from_file.out.substr(0, 2), "4\n");
   EXPECT_EQ(from_stdin.out, from_file.out);
   EXPECT_EQ(from_csv.out, from_file.out);
+  // Like `qdelaunay i < points`: without INPUT, redirected standard input is read.
+  const CliRun redirected = run_cli(dir, {"delaunay"}, dir.file("p.txt"));
+  EXPECT_EQ(redirected.code, 0) << redirected.err;
+  EXPECT_EQ(redirected.out, from_file.out);
 }
 
 TEST(Cli, DelaunayNeighbors) {
