@@ -246,6 +246,31 @@ TEST(DelaunayRobustness, HardFamilies) {
     c = grid(4, 5);
     cases.emplace_back("grid 5^4", c);
   }
+  {
+    std::normal_distribution<double> gauss;  // nearly cospherical: a sphere moved by one ulp
+    PointCloud c{3, {}};
+    for (int i = 0; i < 300; ++i) {
+      double v[3], r = 0;
+      for (double& x : v) r += (x = gauss(rng)) * x;
+      for (double& x : v) c.coords.push_back(std::nextafter(x / std::sqrt(r), (rng() & 1) ? 2.0 : -2.0));
+    }
+    cases.emplace_back("sphere moved by one ulp", c);
+  }
+  for (const double scale : {1e-300, 1e150}) {  // lifts that would underflow or overflow
+    PointCloud c = grid(3, 5);
+    for (double& x : c.coords) x *= scale;
+    cases.emplace_back("grid scaled by " + std::to_string(scale), c);
+  }
+  {
+    PointCloud c = grid(2, 20);  // integer grid far from the origin
+    for (double& x : c.coords) x += 1e15;
+    cases.emplace_back("grid at offset 1e15", c);
+  }
+  {
+    PointCloud c = grid(3, 6);  // a grid jittered below the filters' resolution
+    for (double& x : c.coords) x += 1e-13 * u(rng);
+    cases.emplace_back("grid with 1e-13 jitter", c);
+  }
   for (const auto& [name, points] : cases) {
     const Triangulation t = drange::delaunay(points);
     expect_valid(points, t, name);
