@@ -3,7 +3,11 @@
 #include "geometry/predicates.hpp"
 
 #include <algorithm>
+#include <climits>
+#include <cmath>
+#include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -23,10 +27,49 @@ double squared_distance(int dim, const double* p, const double* q) {
   return s;
 }
 
-// The filter: the determinant of the rows built by `fill_row`, certified or 0.
+// x = odd * 2^e: returns e (x != 0).
+int lowest_bit_exponent(double x) {
+  int exponent = 0;
+  const double f = std::frexp(x, &exponent);
+  const auto mantissa = static_cast<std::uint64_t>(std::fabs(std::ldexp(f, 53)));
+  return exponent - 53 + __builtin_ctzll(mantissa);
+}
+
+// The largest power of two dividing every coordinate of the points (as an exponent), or
+// INT_MAX when all are zero.
+int common_unit_exponent(int dim, const double* base, const double* const* points, int count) {
+  int e = std::numeric_limits<int>::max();
+  for (int c = 0; c < dim; ++c)
+    if (base[c] != 0.0) e = std::min(e, lowest_bit_exponent(base[c]));
+  for (int i = 0; i < count; ++i)
+    for (int c = 0; c < dim; ++c)
+      if (points[i][c] != 0.0) e = std::min(e, lowest_bit_exponent(points[i][c]));
+  return e;
+}
+
+// A static proof that the floating-point evaluation was exact: every coordinate is a multiple
+// of 2^unit, so every entry of a spatial column is a multiple of 2^unit, of the lift column a
+// multiple of 2^(2 unit), and a minor over columns S a multiple of the product of its columns'
+// units. An integer multiple of a power of two below 2^53 of them is a double, and every partial
+// sum and product of the expansion is bounded by the absolute-value tree of its minor. So if
+// every minor's absolute tree is below 2^53 of its unit, no operation rounded: the value is
+// exact, zero included. This is what decides the ties of integer grids without GMP.
+bool evaluation_is_exact(const MinorTable& minors, int n, int lift_column, int unit) {
+  if (unit == std::numeric_limits<int>::max()) return true;  // all coordinates zero
+  for (std::uint32_t mask = 1; mask < (std::uint32_t{1} << n); ++mask) {
+    const bool lift = lift_column >= 0 && (mask >> lift_column & 1u);
+    const int columns = __builtin_popcount(mask) + (lift ? 1 : 0);  // the lift column counts twice
+    // 2^52, not 2^53: a computed bound just below the limit cannot hide a true value above it.
+    if (!(minors.abs_minor(mask) < std::ldexp(1.0, 52 + unit * columns))) return false;
+  }
+  return true;
+}
+
+// The filter: the sign of the determinant of the rows built by `fill_row` when the error bound
+// certifies it, or when the evaluation provably did not round; nullopt otherwise.
 template <class FillRow>
-int filtered_sign(int n, int entry_roundings, FillRow fill_row) {
-  if (n > SubsetTable::kMaxColumns) return 0;
+std::optional<int> filtered_sign(int n, int entry_roundings, int lift_column, int unit, FillRow fill_row) {
+  if (n > SubsetTable::kMaxColumns) return std::nullopt;
   MinorTable minors(n);
   std::vector<double> row(static_cast<std::size_t>(n));
   for (int r = 0; r < n; ++r) {
@@ -34,7 +77,11 @@ int filtered_sign(int n, int entry_roundings, FillRow fill_row) {
     minors.set_row(r, row.data());
   }
   const std::uint32_t all = (std::uint32_t{1} << n) - 1;
-  return certified_sign(minors.minor(all), minors.abs_minor(all), laplace_roundings(n, entry_roundings));
+  const double value = minors.minor(all);
+  const int s = certified_sign(value, minors.abs_minor(all), laplace_roundings(n, entry_roundings));
+  if (s != 0) return s;
+  if (evaluation_is_exact(minors, n, lift_column, unit)) return (value > 0) - (value < 0);
+  return std::nullopt;
 }
 
 IntegerScale scale_of(int dim, const double* base, const double* const* points, int count) {
@@ -78,18 +125,20 @@ int exact_lifted_sign(const Frame& f, const double* const* points) {
 }  // namespace
 
 int orientation(const Frame& f, const double* const* points) {
-  const int s = filtered_sign(f.k, 1, [&](int r, double* row) {
+  const int unit = common_unit_exponent(f.dim, f.base, points, f.k);
+  const std::optional<int> s = filtered_sign(f.k, 1, -1, unit, [&](int r, double* row) {
     for (int c = 0; c < f.k; ++c) row[c] = points[r][f.axis(c)] - f.base[f.axis(c)];
   });
-  return s != 0 ? s : exact_orientation(f, points);
+  return s ? *s : exact_orientation(f, points);
 }
 
 int lifted_sign(const Frame& f, const double* const* points) {
-  const int s = filtered_sign(f.k + 1, lifted_entry_roundings(f.dim), [&](int r, double* row) {
+  const int unit = common_unit_exponent(f.dim, f.base, points, f.k + 1);
+  const std::optional<int> s = filtered_sign(f.k + 1, lifted_entry_roundings(f.dim), f.k, unit, [&](int r, double* row) {
     for (int c = 0; c < f.k; ++c) row[c] = points[r][f.axis(c)] - f.base[f.axis(c)];
     row[f.k] = squared_distance(f.dim, points[r], f.base);
   });
-  return s != 0 ? s : exact_lifted_sign(f, points);
+  return s ? *s : exact_lifted_sign(f, points);
 }
 
 int lifted_sign_perturbed(const Frame& f, const double* const* points, const std::int64_t* ranks) {
