@@ -1,0 +1,97 @@
+// check/exact_volume.cpp: exact determinant sums over integer-scaled points.
+#include "check/exact_volume.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace drange::check {
+namespace {
+
+// x = mantissa * 2^(exponent - 53) with an integer mantissa below 2^53 in magnitude.
+void split(double x, double& mantissa, long& exponent) {
+  int e = 0;
+  mantissa = std::ldexp(std::frexp(x, &e), 53);
+  exponent = static_cast<long>(e) - 53;
+}
+
+}  // namespace
+
+IntegerPoints::IntegerPoints(const double* coords, std::size_t n, int dim, const std::vector<std::int32_t>& ids)
+    : dim_(dim) {
+  auto coordinate = [&](std::int32_t i, int c) { return coords[static_cast<std::size_t>(i) * static_cast<std::size_t>(dim) + static_cast<std::size_t>(c)]; };
+  bool any = false;
+  long highest = 0;
+  for (const std::int32_t i : ids)
+    for (int c = 0; c < dim; ++c) {
+      const double x = coordinate(i, c);
+      if (x == 0.0) continue;
+      double m = 0.0;
+      long e = 0;
+      split(x, m, e);
+      shift_ = any ? std::min(shift_, e) : e;
+      highest = any ? std::max(highest, e) : e;
+      any = true;
+    }
+  const long bits = any ? highest - shift_ + 53 : 1;
+  limbs_ = static_cast<std::size_t>((bits + GMP_NUMB_BITS - 1) / GMP_NUMB_BITS);
+  magnitude_.assign(n * static_cast<std::size_t>(dim) * limbs_, 0);
+  size_.assign(n * static_cast<std::size_t>(dim), 0);
+  mpz_class value;
+  for (const std::int32_t i : ids)
+    for (int c = 0; c < dim; ++c) {
+      const double x = coordinate(i, c);
+      if (x == 0.0) continue;
+      double m = 0.0;
+      long e = 0;
+      split(x, m, e);
+      mpz_set_d(value.get_mpz_t(), m);
+      mpz_mul_2exp(value.get_mpz_t(), value.get_mpz_t(), static_cast<mp_bitcnt_t>(e - shift_));
+      const std::size_t slot = static_cast<std::size_t>(i) * static_cast<std::size_t>(dim) + static_cast<std::size_t>(c);
+      size_t count = 0;
+      mpz_export(&magnitude_[slot * limbs_], &count, -1, sizeof(mp_limb_t), 0, GMP_NAIL_BITS, value.get_mpz_t());
+      size_[slot] = static_cast<std::int32_t>(sgn(value) < 0 ? -static_cast<long>(count) : static_cast<long>(count));
+    }
+}
+
+void IntegerPoints::view(std::size_t i, int c, mpz_t out) const {
+  const std::size_t slot = i * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(c);
+  mpz_roinit_n(out, &magnitude_[slot * limbs_], size_[slot]);
+}
+
+DeterminantSum::DeterminantSum(const IntegerPoints& points, int dim)
+    : points_(points), dim_(dim), matrix_(static_cast<std::size_t>(dim * dim)) {}
+
+void DeterminantSum::add(const std::int32_t* ids, int sign) {
+  const int d = dim_;
+  mpz_t a, b;
+  for (int r = 0; r < d; ++r)
+    for (int c = 0; c < d; ++c) {
+      points_.view(static_cast<std::size_t>(ids[r + 1]), c, a);
+      points_.view(static_cast<std::size_t>(ids[0]), c, b);
+      mpz_sub(at(r, c).get_mpz_t(), a, b);
+    }
+  // Bareiss: after step k, entry (i, j) (i, j > k) is the (k+2)x(k+2) leading minor with row
+  // i and column j, divided exactly by the previous pivot (Sylvester's identity).
+  for (int k = 0; k + 1 < d; ++k) {
+    if (sgn(at(k, k)) == 0) {
+      int r = k + 1;
+      while (r < d && sgn(at(r, k)) == 0) ++r;
+      if (r == d) return;  // zero determinant
+      for (int c = 0; c < d; ++c) std::swap(at(k, c), at(r, c));
+      sign = -sign;
+    }
+    for (int i = k + 1; i < d; ++i)
+      for (int j = k + 1; j < d; ++j) {
+        mpz_mul(scratch_.get_mpz_t(), at(i, j).get_mpz_t(), at(k, k).get_mpz_t());
+        mpz_mul(product_.get_mpz_t(), at(i, k).get_mpz_t(), at(k, j).get_mpz_t());
+        mpz_sub(at(i, j).get_mpz_t(), scratch_.get_mpz_t(), product_.get_mpz_t());
+        if (k > 0) mpz_divexact(at(i, j).get_mpz_t(), at(i, j).get_mpz_t(), at(k - 1, k - 1).get_mpz_t());
+      }
+  }
+  mpz_class& det = at(d - 1, d - 1);
+  if (sign > 0) mpz_add(total_.get_mpz_t(), total_.get_mpz_t(), det.get_mpz_t());
+  else mpz_sub(total_.get_mpz_t(), total_.get_mpz_t(), det.get_mpz_t());
+}
+
+}  // namespace drange::check

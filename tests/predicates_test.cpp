@@ -1,0 +1,281 @@
+// tests/predicates_test.cpp: the exact predicates of geometry/predicates.hpp and exact.hpp
+// against an independent rational reference (oracle.hpp: Gaussian elimination on mpq), on
+// random points, on integer points with exact ties, on near-degenerate inputs at large offsets,
+// and the symbolic perturbation's two defining properties (never zero, antisymmetric).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "geometry/exact.hpp"
+#include "geometry/predicates.hpp"
+#include "oracle.hpp"
+
+namespace drange::test {
+namespace {
+
+using geometry::Frame;
+
+// d+2 points of dimension d, as a base and d+1 others.
+struct LiftedCase {
+  const double* base;
+  std::vector<const double*> points;
+};
+
+LiftedCase lifted_case(const PointCloud& cloud, const std::vector<std::int32_t>& ids) {
+  LiftedCase c{cloud.point(static_cast<std::size_t>(ids[0])), {}};
+  for (std::size_t i = 1; i < ids.size(); ++i) c.points.push_back(cloud.point(static_cast<std::size_t>(ids[i])));
+  return c;
+}
+
+std::vector<std::int32_t> first_ids(int count) {
+  std::vector<std::int32_t> ids;
+  for (int i = 0; i < count; ++i) ids.push_back(i);
+  return ids;
+}
+
+// Compares orientation, in_sphere and lifted_sign with the reference on the first d+2 points.
+void expect_predicates_agree(const PointCloud& cloud) {
+  const int d = cloud.dim;
+  const std::vector<const double*> simplex = corners(cloud, first_ids(d + 1));
+  const double* q = cloud.point(static_cast<std::size_t>(d + 1));
+  const int orientation = reference_orientation(d, simplex);
+  EXPECT_EQ(geometry::simplex_orientation(d, simplex.data()), orientation);
+  const Frame frame{d, d, nullptr, simplex[0]};
+  EXPECT_EQ(geometry::orientation(frame, simplex.data() + 1), orientation);
+  const LiftedCase lifted = lifted_case(cloud, first_ids(d + 2));
+  EXPECT_EQ(geometry::lifted_sign(frame, lifted.points.data()), reference_lifted_sign(d, lifted.base, lifted.points));
+  if (orientation != 0) {
+    EXPECT_EQ(geometry::in_sphere(d, simplex.data(), q), reference_in_sphere(d, simplex, q));
+  }
+  EXPECT_EQ(geometry::simplex_volume_times_factorial(d, simplex.data()),
+            [&] {
+              std::vector<mpq_class> a;
+              for (int r = 1; r <= d; ++r)
+                for (int c = 0; c < d; ++c) a.push_back(mpq_class(simplex[static_cast<std::size_t>(r)][c]) - mpq_class(simplex[0][c]));
+              return reference_determinant(a, d);
+            }());
+}
+
+TEST(PredicateTest, RandomPointsAgreeWithRationalReference) {
+  for (int d = 2; d <= 6; ++d) {
+    for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+      SCOPED_TRACE("d=" + std::to_string(d) + " seed=" + std::to_string(seed));
+      expect_predicates_agree(random_points(static_cast<std::size_t>(d + 2), d, seed));
+    }
+  }
+}
+
+// Small integer coordinates make coplanar and cospherical subsets common: exact zeros.
+TEST(PredicateTest, IntegerPointsWithTiesAgreeWithRationalReference) {
+  int zeros = 0;
+  for (int d = 2; d <= 6; ++d) {
+    for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+      SCOPED_TRACE("d=" + std::to_string(d) + " seed=" + std::to_string(seed));
+      const PointCloud cloud = random_integer_points(static_cast<std::size_t>(d + 2), d, -2, 2, seed);
+      expect_predicates_agree(cloud);
+      const std::vector<const double*> simplex = corners(cloud, first_ids(d + 1));
+      if (reference_orientation(d, simplex) == 0) ++zeros;
+    }
+  }
+  EXPECT_GT(zeros, 20) << "the integer cases should include flat simplices";
+}
+
+PointCloud cloud_of(int dim, const std::vector<double>& coords) {
+  PointCloud c;
+  c.dim = dim;
+  c.coords = coords;
+  return c;
+}
+
+TEST(PredicateTest, CosphericalSquareCorners) {
+  const PointCloud square = cloud_of(2, {0, 0, 1, 0, 1, 1, 0, 1});
+  const std::vector<const double*> triangle = corners(square, {0, 1, 2});
+  EXPECT_EQ(geometry::in_sphere(2, triangle.data(), square.point(3)), 0);
+  const std::vector<const double*> reversed = corners(square, {0, 2, 1});
+  EXPECT_EQ(geometry::in_sphere(2, reversed.data(), square.point(3)), 0);
+  const double inside[2] = {0.5, 0.75}, outside[2] = {1.5, 1.5};
+  EXPECT_EQ(geometry::in_sphere(2, triangle.data(), inside), 1);
+  EXPECT_EQ(geometry::in_sphere(2, reversed.data(), inside), 1);
+  EXPECT_EQ(geometry::in_sphere(2, triangle.data(), outside), -1);
+}
+
+TEST(PredicateTest, CosphericalIntegerCircle) {
+  // All on the circle of radius 5 about the origin.
+  const PointCloud circle = cloud_of(2, {3, 4, 5, 0, 0, 5, -4, 3, 4, -3, -5, 0, 0, -5, -3, -4});
+  for (int q = 3; q < 8; ++q) {
+    const std::vector<const double*> triangle = corners(circle, {0, 1, 2});
+    EXPECT_EQ(geometry::in_sphere(2, triangle.data(), circle.point(static_cast<std::size_t>(q))), 0) << "q=" << q;
+    const Frame frame{2, 2, nullptr, circle.point(0)};
+    const std::vector<const double*> rows = corners(circle, {1, 2, q});
+    EXPECT_EQ(geometry::lifted_sign(frame, rows.data()), 0) << "q=" << q;
+  }
+  const double near_inside[2] = {4.999999999999999, 0}, near_outside[2] = {5.000000000000001, 0};
+  const std::vector<const double*> triangle = corners(circle, {0, 2, 3});
+  EXPECT_EQ(geometry::in_sphere(2, triangle.data(), near_inside), 1);
+  EXPECT_EQ(geometry::in_sphere(2, triangle.data(), near_outside), -1);
+}
+
+TEST(PredicateTest, CosphericalCubeCorners) {
+  std::vector<double> coords;
+  for (int i = 0; i < 8; ++i)
+    for (int k = 0; k < 3; ++k) coords.push_back((i >> k) & 1);
+  const PointCloud cube = cloud_of(3, coords);
+  const std::vector<const double*> tet = corners(cube, {0, 1, 2, 4});
+  for (int q = 3; q < 8; ++q) {
+    if (q == 4) continue;
+    EXPECT_EQ(geometry::in_sphere(3, tet.data(), cube.point(static_cast<std::size_t>(q))), 0) << "q=" << q;
+  }
+  const double centre[3] = {0.5, 0.5, 0.5};
+  EXPECT_EQ(geometry::in_sphere(3, tet.data(), centre), 1);
+  // Four coplanar corners: a flat simplex.
+  const std::vector<const double*> face = corners(cube, {0, 1, 2, 3});
+  EXPECT_EQ(geometry::simplex_orientation(3, face.data()), 0);
+  EXPECT_EQ(geometry::simplex_volume_times_factorial(3, face.data()), 0);
+}
+
+// Points one unit in the last place apart from degenerate positions, at offsets up to 1e9:
+// every double-precision evaluation is wrong or undecided here; only the exact path is right.
+TEST(PredicateTest, NearDegenerateAtLargeOffsets) {
+  for (const double offset : {0.0, 1.0, 1e3, 1e9, -1e9}) {
+    for (const double step : {1e-12, 1e-3, 1.0}) {
+      SCOPED_TRACE("offset=" + std::to_string(offset) + " step=" + std::to_string(step));
+      // Three collinear points (exactly, when representable), then the middle one nudged.
+      const double a = offset, b = offset + step, c = offset + 2 * step;
+      for (const int nudge : {-2, -1, 0, 1, 2}) {
+        double y = offset;
+        for (int i = 0; i < std::abs(nudge); ++i) y = std::nextafter(y, nudge > 0 ? INFINITY : -INFINITY);
+        const PointCloud cloud = cloud_of(2, {a, offset, b, y, c, offset, b + step, offset + step});
+        expect_predicates_agree(cloud);
+      }
+      // Four almost cocircular points: a square at the offset with one corner nudged.
+      for (const int nudge : {-1, 0, 1}) {
+        double x = offset + step;
+        if (nudge != 0) x = std::nextafter(x, nudge > 0 ? INFINITY : -INFINITY);
+        const PointCloud square = cloud_of(2, {offset, offset, offset + step, offset, offset + step, offset + step, offset, x});
+        expect_predicates_agree(square);
+      }
+    }
+  }
+}
+
+TEST(PredicateTest, NearDegenerateRandomPerturbationsInHigherDimensions) {
+  // d+1 points on the hyperplane x_0 + ... + x_{d-1} = offset*d (integers), then one coordinate
+  // of the last point nudged by one ulp: the orientation is decided only exactly.
+  for (int d = 3; d <= 6; ++d) {
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+      SCOPED_TRACE("d=" + std::to_string(d) + " seed=" + std::to_string(seed));
+      TestRandom random(seed);
+      PointCloud cloud;
+      cloud.dim = d;
+      const double offset = 1e9;
+      for (int i = 0; i < d + 2; ++i) {
+        double rest = 0;
+        for (int k = 0; k + 1 < d; ++k) {
+          const double x = offset + static_cast<double>(random.integer(-1000, 1000));
+          cloud.coords.push_back(x);
+          rest += x - offset;
+        }
+        cloud.coords.push_back(offset - rest);
+      }
+      double& last = cloud.coords[static_cast<std::size_t>(d * (d + 1) - 1)];
+      last = std::nextafter(last, (seed % 2) ? INFINITY : -INFINITY);
+      expect_predicates_agree(cloud);
+    }
+  }
+}
+
+TEST(PredicateTest, ExactRationalIsExact) {
+  for (const double x : {0.0, -0.0, 0.1, -1e-310, 1e300, 3.0, std::nextafter(1.0, 2.0)}) {
+    EXPECT_EQ(geometry::exact_rational(x), mpq_class(x)) << x;
+  }
+}
+
+// ---- The symbolic perturbation. ----
+
+std::vector<std::int64_t> ranks_for(std::size_t count, std::uint64_t seed) {
+  std::vector<std::int64_t> ranks;
+  for (std::size_t i = 0; i < count; ++i) ranks.push_back(static_cast<std::int64_t>(i));
+  TestRandom random(seed);
+  for (std::size_t i = count; i > 1; --i) std::swap(ranks[i - 1], ranks[static_cast<std::size_t>(random.integer(0, static_cast<std::int64_t>(i) - 1))]);
+  return ranks;
+}
+
+int perturbed(int d, const std::vector<const double*>& all, const std::vector<std::int64_t>& ranks) {
+  const Frame frame{d, d, nullptr, all[0]};
+  return geometry::lifted_sign_perturbed(frame, all.data() + 1, ranks.data());
+}
+
+// Checks on d+2 cospherical (or any) points: nonzero, equal to the reference, and flipped by
+// every transposition of two points (ranks travel with their points).
+void expect_perturbation_properties(int d, const std::vector<const double*>& all, std::uint64_t seed) {
+  const std::vector<std::int64_t> ranks = ranks_for(all.size(), seed);
+  const int sign = perturbed(d, all, ranks);
+  EXPECT_NE(sign, 0);
+  const std::vector<const double*> rest(all.begin() + 1, all.end());
+  EXPECT_EQ(sign, reference_lifted_sign_perturbed(d, all[0], rest, ranks));
+  const Frame frame{d, d, nullptr, all[0]};
+  const int unperturbed = geometry::lifted_sign(frame, all.data() + 1);
+  if (unperturbed != 0) {
+    EXPECT_EQ(sign, unperturbed);
+  }
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j) {
+      std::vector<const double*> swapped = all;
+      std::vector<std::int64_t> swapped_ranks = ranks;
+      std::swap(swapped[i], swapped[j]);
+      std::swap(swapped_ranks[i], swapped_ranks[j]);
+      EXPECT_EQ(perturbed(d, swapped, swapped_ranks), -sign) << "swap " << i << "," << j;
+    }
+}
+
+TEST(PredicateTest, PerturbedLiftedSignOnCocircularPoints) {
+  const PointCloud circle = cloud_of(2, {3, 4, 5, 0, 0, 5, -4, 3, 4, -3, -5, 0});
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+    SCOPED_TRACE("seed=" + std::to_string(seed));
+    expect_perturbation_properties(2, corners(circle, {0, 1, 2, 3}), seed);
+    expect_perturbation_properties(2, corners(circle, {5, 2, 4, 0}), seed);
+  }
+  const PointCloud square = cloud_of(2, {0, 0, 1, 0, 1, 1, 0, 1});
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) expect_perturbation_properties(2, corners(square, {0, 1, 2, 3}), seed);
+}
+
+TEST(PredicateTest, PerturbedLiftedSignOnCubeCornersAndGrids) {
+  std::vector<double> coords;
+  for (int i = 0; i < 8; ++i)
+    for (int k = 0; k < 3; ++k) coords.push_back((i >> k) & 1);
+  const PointCloud cube = cloud_of(3, coords);
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    SCOPED_TRACE("seed=" + std::to_string(seed));
+    expect_perturbation_properties(3, corners(cube, {0, 1, 2, 4, 7}), seed);
+    expect_perturbation_properties(3, corners(cube, {3, 5, 6, 0, 7}), seed);
+  }
+  // Random grid points in d = 2..4: whenever the d+2 points span E^d the sign is never zero.
+  for (int d = 2; d <= 4; ++d) {
+    for (std::uint64_t seed = 1; seed <= 80; ++seed) {
+      const PointCloud cloud = random_integer_points(static_cast<std::size_t>(d + 2), d, 0, 2, seed);
+      const std::vector<const double*> all = corners(cloud, first_ids(d + 2));
+      // Spanning: some d+1 of the points have nonzero volume.
+      bool spans = false;
+      for (int skip = 0; skip < d + 2 && !spans; ++skip) {
+        std::vector<const double*> simplex;
+        for (int i = 0; i < d + 2; ++i)
+          if (i != skip) simplex.push_back(all[static_cast<std::size_t>(i)]);
+        spans = reference_orientation(d, simplex) != 0;
+      }
+      bool distinct = true;
+      for (int i = 0; i < d + 2; ++i)
+        for (int j = i + 1; j < d + 2; ++j)
+          if (std::equal(all[static_cast<std::size_t>(i)], all[static_cast<std::size_t>(i)] + d, all[static_cast<std::size_t>(j)])) distinct = false;
+      if (!spans || !distinct) continue;
+      SCOPED_TRACE("d=" + std::to_string(d) + " seed=" + std::to_string(seed));
+      expect_perturbation_properties(d, all, seed);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace drange::test
