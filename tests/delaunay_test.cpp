@@ -20,25 +20,18 @@
 #include "drange/errors.hpp"
 #include "drange/generate.hpp"
 #include "geometry/predicates.hpp"
+#include "oracle.hpp"
 
 namespace {
 
 using drange::Distribution;
 using drange::PointCloud;
 using drange::Triangulation;
-using Simplex = std::vector<std::int32_t>;
+using drange::test::Simplex;
 
 PointCloud cloud(int d, std::vector<double> coords) { return PointCloud{d, std::move(coords)}; }
 
-std::set<Simplex> canonical(const Triangulation& t) {
-  std::set<Simplex> out;
-  for (std::size_t s = 0; s < t.size(); ++s) {
-    Simplex v(t.simplex(s), t.simplex(s) + t.dim + 1);
-    std::sort(v.begin(), v.end());
-    out.insert(v);
-  }
-  return out;
-}
+std::vector<Simplex> canonical(const Triangulation& t) { return drange::test::canonical(t.simplices, t.dim); }
 
 // Simplices as sets of coordinate tuples: comparable across permutations and duplicates.
 std::set<std::vector<std::vector<double>>> geometric(const Triangulation& t, const PointCloud& points) {
@@ -58,9 +51,10 @@ std::set<std::vector<std::vector<double>>> geometric(const Triangulation& t, con
 // The perturbed Delaunay triangulation by definition: every (d+1)-subset of distinct points,
 // with nonzero volume, such that no other point is inside its circumsphere under the
 // symbolic perturbation (ranks: lexicographic order). O(n^(d+2)); for tiny inputs only.
-// It shares the perturbed predicate with the engine, nothing else: not the search, the
-// kd-tree, the first facet or the facet table.
-std::set<Simplex> perturbed_oracle(const PointCloud& points) {
+// It shares nothing with the engine: the predicates are the test's own rational references
+// (oracle.hpp), so neither the search, the kd-tree, the first facet, the facet table nor the
+// library's filters are involved.
+std::vector<Simplex> perturbed_oracle(const PointCloud& points) {
   const int d = points.dim;
   const auto n = static_cast<std::int32_t>(points.size());
   std::vector<std::int32_t> order(static_cast<std::size_t>(n));
@@ -70,15 +64,13 @@ std::set<Simplex> perturbed_oracle(const PointCloud& points) {
   });
   std::vector<std::int64_t> rank(static_cast<std::size_t>(n));
   for (std::int32_t r = 0; r < n; ++r) rank[static_cast<std::size_t>(order[static_cast<std::size_t>(r)])] = r;
-  std::set<Simplex> out;
+  std::vector<Simplex> out;
   Simplex subset(static_cast<std::size_t>(d + 1));
   std::function<void(int, std::int32_t)> choose = [&](int position, std::int32_t from) {
     if (position == d + 1) {
-      std::vector<const double*> p;
-      for (std::int32_t i : subset) p.push_back(points.point(static_cast<std::size_t>(i)));
-      const int o = drange::geometry::simplex_orientation(d, p.data());
+      const std::vector<const double*> p = drange::test::corners(points, subset);
+      const int o = drange::test::reference_orientation(d, p);
       if (o == 0) return;
-      const drange::geometry::Frame frame{d, d, nullptr, p[0]};
       std::vector<const double*> rows(p.begin() + 1, p.end());
       rows.push_back(nullptr);
       std::vector<std::int64_t> ranks;
@@ -88,9 +80,9 @@ std::set<Simplex> perturbed_oracle(const PointCloud& points) {
         if (std::find(subset.begin(), subset.end(), q) != subset.end()) continue;
         rows.back() = points.point(static_cast<std::size_t>(q));
         ranks.back() = rank[static_cast<std::size_t>(q)];
-        if (o * drange::geometry::lifted_sign_perturbed(frame, rows.data(), ranks.data()) < 0) return;  // inside
+        if (o * drange::test::reference_lifted_sign_perturbed(d, p[0], rows, ranks) < 0) return;  // inside
       }
-      out.insert(subset);
+      out.push_back(subset);
       return;
     }
     for (std::int32_t i = from; i < n; ++i) {
@@ -265,6 +257,12 @@ TEST(DelaunayRobustness, HardFamilies) {
     PointCloud c = grid(2, 20);  // integer grid far from the origin
     for (double& x : c.coords) x += 1e15;
     cases.emplace_back("grid at offset 1e15", c);
+  }
+  {
+    // Magnitudes from 1e-300 to 1e300: no power-of-two scaling fits, the generic predicates decide.
+    PointCloud c{2, {0, 0, 1e300, 0, 0, 1e300, 1e300, 1e300, 1e-300, 1e-300, 3e-300, 1e-300, 2e-300, 4e-300}};
+    for (int i = 0; i < 30; ++i) c.coords.insert(c.coords.end(), {1e300 * u(rng), 1e300 * u(rng)});
+    cases.emplace_back("magnitudes 1e-300 to 1e300", c);
   }
   {
     PointCloud c = grid(3, 6);  // a grid jittered below the filters' resolution

@@ -24,7 +24,11 @@ struct CheckReport {
 //   - indices in range, no repeated vertex, nonzero volume;
 //   - every facet shared by at most two simplices, and then from opposite sides;
 //   - every boundary facet supports the convex hull (no point strictly beyond it);
-//   - the simplices cover the hull once (total volume equals the hull's volume);
+//   - the simplices cover the hull exactly once: proved by the boundary forming a closed,
+//     locally convex surface around an interior point that lies in exactly one simplex (after
+//     Mehlhorn et al., "Checking geometric programs", 1999); the exact total volume is also
+//     compared with the volume enclosed by the boundary facets, as a cross-check of the facet
+//     matching;
 //   - every distinct point is a vertex (exact duplicates may be left out);
 //   - no point strictly inside any circumsphere (locally, across every interior facet,
 //     which for a triangulation is equivalent to the global condition).

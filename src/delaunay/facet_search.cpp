@@ -95,7 +95,7 @@ void FacetSearch::set_candidate(std::int32_t id) {
   const double gamma = geometry::gamma_bound(lifted_roundings_);
   const double wd = w_[static_cast<std::size_t>(d_)];
   const double ewd = gamma * w_abs_[static_cast<std::size_t>(d_)];
-  if (!(std::fabs(wd) > 2 * ewd) || !std::isfinite(wd)) {  // nearly flat candidate: no useful box
+  if (!points_.scaled || !(std::fabs(wd) > 2 * ewd) || !std::isfinite(wd)) {  // no trustworthy box
     reset_box();
     return;
   }
@@ -129,7 +129,7 @@ bool FacetSearch::on_open_side(std::int32_t id) {
     o += a_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
     o_abs += a_abs_[static_cast<std::size_t>(k)] * std::fabs(row_[static_cast<std::size_t>(k)]);
   }
-  int s = certified_sign(o, o_abs, orient_roundings_);
+  int s = points_.scaled ? certified_sign(o, o_abs, orient_roundings_) : 0;
   if (s == 0) {
     rows_[static_cast<std::size_t>(d_ - 1)] = points_.point(id);
     const geometry::Frame frame{d_, d_, nullptr, f0_};
@@ -145,7 +145,7 @@ bool FacetSearch::beats_candidate(std::int32_t id) {
     v += w_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
     v_abs += w_abs_[static_cast<std::size_t>(k)] * std::fabs(row_[static_cast<std::size_t>(k)]);
   }
-  int s = certified_sign(v, v_abs, lifted_roundings_);
+  int s = points_.scaled ? certified_sign(v, v_abs, lifted_roundings_) : 0;
   if (s == 0) {
     rows_[static_cast<std::size_t>(d_)] = points_.point(id);
     ranks_[static_cast<std::size_t>(d_ + 1)] = points_.rank[static_cast<std::size_t>(id)];
@@ -175,7 +175,7 @@ void FacetSearch::consider(std::int32_t id) {
 }
 
 bool FacetSearch::prune(std::int32_t node) const {
-  if (!options_.prune_closed_side) return false;
+  if (!options_.prune_closed_side || !points_.scaled) return false;
   // The largest value of sigma O over the node's box, at the corner that maximises each term.
   const double* lo = points_.tree.lower(node);
   const double* hi = points_.tree.upper(node);

@@ -18,7 +18,12 @@ struct PointStore {
   std::vector<double> coords;              // size * dim, in id order
   std::vector<std::int64_t> rank;          // lexicographic rank of each id
   std::vector<std::int64_t> input_index;   // input index of each id
-  spatial::KdTree tree;                    // over the ids (empty for the scan variant? no: always built)
+  spatial::KdTree tree;                    // over the ids
+  // True when the coordinates were scaled below 1 in magnitude (prepare_points.cpp): then every
+  // entry of the search's determinants is below 2^6 and no underflow can escape the error bounds
+  // of its fast filter. False only for inputs spanning more than 2^1022 in magnitude, which
+  // are then decided by the generic predicates alone.
+  bool scaled = false;
 
   const double* point(std::int32_t id) const { return coords.data() + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim); }
 };

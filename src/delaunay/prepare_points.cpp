@@ -32,19 +32,20 @@ void check_input(PointsView input) {
 // is exact unless it leaves the normal range. Bringing the largest magnitude near 1 keeps the
 // squared norms of the lifted rows away from overflow (coordinates near 1e300) and underflow
 // (near 1e-300), where the floating-point filters cannot decide and every test would be exact.
-void scale_by_power_of_two(std::vector<double>& coords) {
+bool scale_by_power_of_two(std::vector<double>& coords) {
   double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
   for (double x : coords) {
     if (x == 0.0) continue;
     largest = std::max(largest, std::fabs(x));
     smallest = std::min(smallest, std::fabs(x));
   }
-  if (largest == 0.0) return;
+  if (largest == 0.0) return true;
   int exponent = 0;
   std::frexp(largest, &exponent);
   const double factor = std::ldexp(1.0, -exponent);
-  if (smallest * factor < std::numeric_limits<double>::min()) return;  // would lose the smallest: keep as is
+  if (smallest * factor < std::numeric_limits<double>::min()) return false;  // would lose the smallest: keep as is
   for (double& x : coords) x *= factor;
+  return true;
 }
 
 }  // namespace
@@ -89,7 +90,7 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   std::vector<double> by_rank(distinct.size() * static_cast<std::size_t>(d));
   for (std::size_t r = 0; r < distinct.size(); ++r)
     std::copy_n(input.point(static_cast<std::size_t>(distinct[r])), d, by_rank.begin() + static_cast<std::ptrdiff_t>(r * static_cast<std::size_t>(d)));
-  scale_by_power_of_two(by_rank);
+  store.scaled = scale_by_power_of_two(by_rank);
   store.tree.build(by_rank.data(), store.size, d, leaf_size);
   const std::vector<std::int32_t>& order = store.tree.order();
   store.coords.resize(by_rank.size());

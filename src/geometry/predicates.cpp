@@ -65,6 +65,18 @@ bool evaluation_is_exact(const MinorTable& minors, int n, int lift_column, int u
   return true;
 }
 
+// The error bound of error_bound.hpp assumes no operation underflowed or overflowed. Every
+// product and partial sum of the expansion is bounded by its minor's absolute tree, and a
+// product far below its minor's tree contributes an underflow error far below the bound's
+// slack; so it suffices that every nonzero absolute tree lies well inside the normal range.
+bool in_normal_range(const MinorTable& minors, int n) {
+  for (std::uint32_t mask = 1; mask < (std::uint32_t{1} << n); ++mask) {
+    const double a = minors.abs_minor(mask);
+    if (a != 0.0 && !(a > kFilterUnderflow && a < kFilterOverflow)) return false;
+  }
+  return true;
+}
+
 // The filter: the sign of the determinant of the rows built by `fill_row` when the error bound
 // certifies it, or when the evaluation provably did not round; nullopt otherwise.
 template <class FillRow>
@@ -78,7 +90,7 @@ std::optional<int> filtered_sign(int n, int entry_roundings, int lift_column, in
   }
   const std::uint32_t all = (std::uint32_t{1} << n) - 1;
   const double value = minors.minor(all);
-  const int s = certified_sign(value, minors.abs_minor(all), laplace_roundings(n, entry_roundings));
+  const int s = in_normal_range(minors, n) ? certified_sign(value, minors.abs_minor(all), laplace_roundings(n, entry_roundings)) : 0;
   if (s != 0) return s;
   if (evaluation_is_exact(minors, n, lift_column, unit)) return (value > 0) - (value < 0);
   return std::nullopt;

@@ -11,28 +11,19 @@
 
 #include <algorithm>
 #include <map>
-#include <set>
 #include <string>
 #include <vector>
 
 #include "drange/delaunay.hpp"
+#include "oracle.hpp"
+#include "peers/peer_case.hpp"
 #include "drange/generate.hpp"
 
+namespace drange {
 namespace {
 
-using Simplex = std::vector<std::int32_t>;
-
-std::set<Simplex> canonical(const std::vector<std::int32_t>& flat, int d) {
-  std::set<Simplex> out;
-  for (std::size_t s = 0; s < flat.size(); s += static_cast<std::size_t>(d + 1)) {
-    Simplex v(flat.begin() + static_cast<std::ptrdiff_t>(s), flat.begin() + static_cast<std::ptrdiff_t>(s) + d + 1);
-    std::sort(v.begin(), v.end());
-    out.insert(v);
-  }
-  return out;
-}
-
-std::set<Simplex> cgal_dd(const drange::PointCloud& points) {
+// CGAL's simplices as a flat array of input indices.
+std::vector<std::int32_t> cgal_dd(const PointCloud& points) {
   using Kernel = CGAL::Epick_d<CGAL::Dynamic_dimension_tag>;
   using DT = CGAL::Delaunay_triangulation<Kernel>;
   const int d = points.dim;
@@ -45,20 +36,19 @@ std::set<Simplex> cgal_dd(const drange::PointCloud& points) {
   }
   DT dt(d);
   dt.insert(input.begin(), input.end());
-  std::set<Simplex> out;
+  std::vector<std::int32_t> out;
   for (auto cell = dt.finite_full_cells_begin(); cell != dt.finite_full_cells_end(); ++cell) {
-    Simplex s;
+    std::vector<std::int32_t> s;
     for (int k = 0; k <= d; ++k) {
       const DT::Point& p = cell->vertex(k)->point();
       s.push_back(index.at(std::vector<double>(p.cartesian_begin(), p.cartesian_end())));
     }
-    std::sort(s.begin(), s.end());
-    out.insert(s);
+    out.insert(out.end(), s.begin(), s.end());
   }
   return out;
 }
 
-std::set<Simplex> cgal_3(const drange::PointCloud& points) {
+std::vector<std::int32_t> cgal_3(const PointCloud& points) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Vb = CGAL::Triangulation_vertex_base_with_info_3<std::int32_t, K>;
   using Tds = CGAL::Triangulation_data_structure_3<Vb>;
@@ -67,45 +57,32 @@ std::set<Simplex> cgal_3(const drange::PointCloud& points) {
   for (std::size_t i = 0; i < points.size(); ++i)
     input.emplace_back(K::Point_3(points.point(i)[0], points.point(i)[1], points.point(i)[2]), static_cast<std::int32_t>(i));
   DT dt(input.begin(), input.end());
-  std::set<Simplex> out;
+  std::vector<std::int32_t> out;
   for (auto cell = dt.finite_cells_begin(); cell != dt.finite_cells_end(); ++cell) {
-    Simplex s;
+    std::vector<std::int32_t> s;
     for (int k = 0; k < 4; ++k) s.push_back(cell->vertex(k)->info());
-    std::sort(s.begin(), s.end());
-    out.insert(s);
+    out.insert(out.end(), s.begin(), s.end());
   }
   return out;
 }
 
-struct Case {
-  drange::Distribution distribution;
-  std::size_t n;
-  int d;
-};
-
-std::string describe(const Case& c) {
-  static const char* const names[] = {"uniform", "ball", "sphere", "gaussian", "clustered", "grid"};
-  return std::string(names[static_cast<int>(c.distribution)]) + "_d" + std::to_string(c.d) + "_n" + std::to_string(c.n);
-}
-std::string case_name(const ::testing::TestParamInfo<Case>& info) { return describe(info.param); }
-void PrintTo(const Case& c, std::ostream* os) { *os << describe(c); }
-
-class CgalAgreement : public ::testing::TestWithParam<Case> {};
+class CgalAgreement : public ::testing::TestWithParam<test::PeerCase> {};
 
 TEST_P(CgalAgreement, SameSimplicesAsCgalDelaunayTriangulation) {
-  const Case c = GetParam();
+  const test::PeerCase c = GetParam();
   const std::uint64_t seed = 2000 + c.n + static_cast<std::uint64_t>(c.d);
-  const drange::PointCloud points = drange::generate_points(c.distribution, c.n, c.d, seed);
-  const drange::Triangulation ours = drange::delaunay(points);
-  EXPECT_EQ(canonical(ours.simplices, c.d), cgal_dd(points)) << "seed " << seed;
-  if (c.d == 3) EXPECT_EQ(canonical(ours.simplices, c.d), cgal_3(points)) << "seed " << seed;
+  const PointCloud points = generate_points(c.distribution, c.n, c.d, seed);
+  const Triangulation ours = delaunay(points);
+  EXPECT_EQ(test::canonical(ours.simplices, c.d), test::canonical(cgal_dd(points), c.d)) << "seed " << seed;
+  if (c.d == 3) EXPECT_EQ(test::canonical(ours.simplices, c.d), test::canonical(cgal_3(points), c.d)) << "seed " << seed;
 }
 
 INSTANTIATE_TEST_SUITE_P(
     RandomInputs, CgalAgreement,
-    ::testing::Values(Case{drange::Distribution::Uniform, 4000, 2}, Case{drange::Distribution::Clustered, 4000, 2},
-                      Case{drange::Distribution::Uniform, 20000, 3}, Case{drange::Distribution::Gaussian, 3000, 3},
-                      Case{drange::Distribution::Uniform, 1000, 4}, Case{drange::Distribution::Ball, 400, 5}),
-    case_name);
+    ::testing::Values(test::PeerCase{Distribution::Uniform, 4000, 2}, test::PeerCase{Distribution::Clustered, 4000, 2},
+                      test::PeerCase{Distribution::Uniform, 20000, 3}, test::PeerCase{Distribution::Gaussian, 3000, 3},
+                      test::PeerCase{Distribution::Uniform, 1000, 4}, test::PeerCase{Distribution::Ball, 400, 5}),
+    test::case_name);
 
 }  // namespace
+}  // namespace drange
