@@ -1,6 +1,8 @@
 // check/exact_volume.cpp: exact determinant sums over integer-scaled points.
 #include "check/exact_volume.hpp"
 
+#include "geometry/exact_matrix.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -71,26 +73,10 @@ void DeterminantSum::add(const std::int32_t* ids, int sign) {
       points_.view(static_cast<std::size_t>(ids[0]), c, b);
       mpz_sub(at(r, c).get_mpz_t(), a, b);
     }
-  // Bareiss: after step k, entry (i, j) (i, j > k) is the (k+2)x(k+2) leading minor with row
-  // i and column j, divided exactly by the previous pivot (Sylvester's identity).
-  for (int k = 0; k + 1 < d; ++k) {
-    if (sgn(at(k, k)) == 0) {
-      int r = k + 1;
-      while (r < d && sgn(at(r, k)) == 0) ++r;
-      if (r == d) return;  // zero determinant
-      for (int c = 0; c < d; ++c) std::swap(at(k, c), at(r, c));
-      sign = -sign;
-    }
-    for (int i = k + 1; i < d; ++i)
-      for (int j = k + 1; j < d; ++j) {
-        mpz_mul(scratch_.get_mpz_t(), at(i, j).get_mpz_t(), at(k, k).get_mpz_t());
-        mpz_mul(product_.get_mpz_t(), at(i, k).get_mpz_t(), at(k, j).get_mpz_t());
-        mpz_sub(at(i, j).get_mpz_t(), scratch_.get_mpz_t(), product_.get_mpz_t());
-        if (k > 0) mpz_divexact(at(i, j).get_mpz_t(), at(i, j).get_mpz_t(), at(k - 1, k - 1).get_mpz_t());
-      }
-  }
-  mpz_class& det = at(d - 1, d - 1);
-  if (sign > 0) mpz_add(total_.get_mpz_t(), total_.get_mpz_t(), det.get_mpz_t());
+  const int parity = geometry::bareiss_in_place(matrix_, d, scratch_);
+  if (parity == 0) return;  // a flat simplex adds nothing
+  const mpz_class& det = at(d - 1, d - 1);
+  if (parity * sign > 0) mpz_add(total_.get_mpz_t(), total_.get_mpz_t(), det.get_mpz_t());
   else mpz_sub(total_.get_mpz_t(), total_.get_mpz_t(), det.get_mpz_t());
 }
 

@@ -5,8 +5,7 @@
 // every point's coordinates are scaled once, by one common power of two, into integers (every
 // double is m * 2^e, see geometry/exact_matrix.hpp) stored as flat GMP limbs; each determinant
 // is then an integer in the common unit 2^(d * shift), and the sums are plain GMP integers,
-// computed with preallocated temporaries (Bareiss' fraction-free elimination; every division
-// is exact).
+// computed with preallocated temporaries (geometry::bareiss_in_place).
 #pragma once
 
 #include <gmpxx.h>
@@ -52,7 +51,7 @@ class DeterminantSum {
   const IntegerPoints& points_;
   int dim_;
   std::vector<mpz_class> matrix_;
-  mpz_class scratch_, product_, total_;
+  mpz_class scratch_, total_;
 };
 
 }  // namespace drange::check

@@ -26,32 +26,42 @@ mpz_class IntegerScale::integer(double x) const {
   return m;
 }
 
-mpz_class bareiss_determinant(std::vector<mpz_class>& a, int n) {
+int bareiss_in_place(std::vector<mpz_class>& a, int n, mpz_class& scratch) {
   auto at = [&](int r, int c) -> mpz_class& { return a[static_cast<std::size_t>(r * n + c)]; };
-  int sign = 1;
-  mpz_class previous = 1;
-  for (int k = 0; k < n - 1; ++k) {
+  int parity = 1;
+  for (int k = 0; k + 1 < n; ++k) {
     if (at(k, k) == 0) {
       int swap_row = k + 1;
       while (swap_row < n && at(swap_row, k) == 0) ++swap_row;
       if (swap_row == n) return 0;
-      for (int c = 0; c < n; ++c) std::swap(at(k, c), at(swap_row, c));
-      sign = -sign;
+      for (int c = 0; c < n; ++c) mpz_swap(at(k, c).get_mpz_t(), at(swap_row, c).get_mpz_t());
+      parity = -parity;
     }
-    for (int i = k + 1; i < n; ++i) {
+    for (int i = k + 1; i < n; ++i)
       for (int j = k + 1; j < n; ++j) {
-        // Bareiss step: the division by the previous pivot is exact (Sylvester's identity).
-        at(i, j) = at(i, j) * at(k, k) - at(i, k) * at(k, j);
-        mpz_divexact(at(i, j).get_mpz_t(), at(i, j).get_mpz_t(), previous.get_mpz_t());
+        // Bareiss step: a_ij a_kk - a_ik a_kj, divided exactly by the previous pivot
+        // (Sylvester's identity); row swaps below k leave that pivot in place.
+        mpz_mul(scratch.get_mpz_t(), at(i, j).get_mpz_t(), at(k, k).get_mpz_t());
+        mpz_submul(scratch.get_mpz_t(), at(i, k).get_mpz_t(), at(k, j).get_mpz_t());
+        if (k > 0) mpz_divexact(at(i, j).get_mpz_t(), scratch.get_mpz_t(), at(k - 1, k - 1).get_mpz_t());
+        else mpz_swap(at(i, j).get_mpz_t(), scratch.get_mpz_t());
       }
-    }
-    previous = at(k, k);
   }
-  mpz_class det = at(n - 1, n - 1);
-  if (sign < 0) det = -det;
+  return at(n - 1, n - 1) == 0 ? 0 : parity;
+}
+
+mpz_class bareiss_determinant(std::vector<mpz_class>& a, int n) {
+  mpz_class scratch;
+  const int parity = bareiss_in_place(a, n, scratch);
+  if (parity == 0) return 0;
+  mpz_class det = a[static_cast<std::size_t>(n * n - 1)];
+  if (parity < 0) det = -det;
   return det;
 }
 
-int bareiss_sign(std::vector<mpz_class>& a, int n) { return sgn(bareiss_determinant(a, n)); }
+int bareiss_sign(std::vector<mpz_class>& a, int n) {
+  mpz_class scratch;
+  return bareiss_in_place(a, n, scratch) * sgn(a[static_cast<std::size_t>(n * n - 1)]);
+}
 
 }  // namespace drange::geometry

@@ -25,6 +25,11 @@ class IntegerScale {
   bool any_ = false;
 };
 
+// Bareiss' fraction-free elimination of the n x n integer matrix a (row-major), in place and
+// without allocating beyond `scratch`. Returns 0 when the matrix is singular; otherwise the
+// parity (+1 or -1) of the row swaps made: the determinant is that parity times a[n*n - 1].
+int bareiss_in_place(std::vector<mpz_class>& a, int n, mpz_class& scratch);
+
 // Sign of the determinant of the n x n integer matrix a (row-major); a is destroyed.
 int bareiss_sign(std::vector<mpz_class>& a, int n);
 // The determinant itself; a is destroyed.
