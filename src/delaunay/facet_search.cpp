@@ -10,7 +10,7 @@
 
 namespace drange::engine {
 
-using geometry::certified_sign;
+using geometry::certified_sign_with;
 
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -21,8 +21,9 @@ FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options)
     : points_(points),
       options_(options),
       d_(points.dim),
-      orient_roundings_(geometry::laplace_roundings(points.dim, 1)),
-      lifted_roundings_(geometry::laplace_roundings(points.dim + 1, geometry::lifted_entry_roundings(points.dim))),
+      orient_gamma_(geometry::gamma_bound(geometry::laplace_roundings(points.dim, 1))),
+      lifted_gamma_(geometry::gamma_bound(
+          geometry::laplace_roundings(points.dim + 1, geometry::lifted_entry_roundings(points.dim)))),
       minors_(points.dim + 1),
       a_(static_cast<std::size_t>(d_)),
       a_abs_(static_cast<std::size_t>(d_)),
@@ -92,7 +93,7 @@ void FacetSearch::set_candidate(std::int32_t id) {
   // The sphere through F and p is {x : I(p, x) / O(p) = 0}; I(p, x) / O(p) is the power of x,
   // so its centre is f0 - w_spatial / (2 w_lift) and it passes through f0. The box is the
   // sphere's bounding box, enlarged by the effect of the minors' error bounds on the centre.
-  const double gamma = geometry::gamma_bound(lifted_roundings_);
+  const double gamma = lifted_gamma_;
   const double wd = w_[static_cast<std::size_t>(d_)];
   const double ewd = gamma * w_abs_[static_cast<std::size_t>(d_)];
   if (!points_.scaled || !(std::fabs(wd) > 2 * ewd) || !std::isfinite(wd)) {  // no trustworthy box
@@ -129,7 +130,7 @@ bool FacetSearch::on_open_side(std::int32_t id) {
     o += a_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
     o_abs += a_abs_[static_cast<std::size_t>(k)] * std::fabs(row_[static_cast<std::size_t>(k)]);
   }
-  int s = points_.scaled ? certified_sign(o, o_abs, orient_roundings_) : 0;
+  int s = points_.scaled ? certified_sign_with(o, o_abs, orient_gamma_) : 0;
   if (s == 0) {
     rows_[static_cast<std::size_t>(d_ - 1)] = points_.point(id);
     const geometry::Frame frame{d_, d_, nullptr, f0_};
@@ -145,7 +146,7 @@ bool FacetSearch::beats_candidate(std::int32_t id) {
     v += w_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
     v_abs += w_abs_[static_cast<std::size_t>(k)] * std::fabs(row_[static_cast<std::size_t>(k)]);
   }
-  int s = points_.scaled ? certified_sign(v, v_abs, lifted_roundings_) : 0;
+  int s = points_.scaled ? certified_sign_with(v, v_abs, lifted_gamma_) : 0;
   if (s == 0) {
     rows_[static_cast<std::size_t>(d_)] = points_.point(id);
     ranks_[static_cast<std::size_t>(d_ + 1)] = points_.rank[static_cast<std::size_t>(id)];
@@ -186,7 +187,7 @@ bool FacetSearch::prune(std::int32_t node) const {
     m += std::max(a * dlo, a * dhi);
     m_abs += a_abs_[static_cast<std::size_t>(k)] * std::max(std::fabs(dlo), std::fabs(dhi));
   }
-  return certified_sign(m, m_abs, orient_roundings_) < 0;
+  return certified_sign_with(m, m_abs, orient_gamma_) < 0;
 }
 
 std::int32_t FacetSearch::find_apex(const std::int32_t* facet, int sigma, SearchCounters& counters) {

@@ -63,8 +63,8 @@ class FacetSearch {
   const PointStore& points_;
   SearchOptions options_;
   int d_;
-  int orient_roundings_;
-  int lifted_roundings_;
+  double orient_gamma_;  // error bound factors (error_bound.hpp) of O(x) and I(p, x)
+  double lifted_gamma_;
 
   // Per facet.
   const std::int32_t* facet_ = nullptr;

@@ -33,13 +33,18 @@ constexpr int laplace_roundings(int k, int entry_roundings) { return k * entry_r
 // (1), the squares (1) and the sum of dim squares (dim - 1).
 constexpr int lifted_entry_roundings(int dim) { return dim + 1; }
 
-// The sign of `value` if the bound proves it, else 0 (undecided).
-inline int certified_sign(double value, double abs_tree, int roundings) {
+// The sign of `value` if the bound gamma * abs_tree proves it, else 0 (undecided). Hot loops
+// pass a gamma computed once with gamma_bound.
+inline int certified_sign_with(double value, double abs_tree, double gamma) {
   if (!(abs_tree > kFilterUnderflow && abs_tree < kFilterOverflow)) return 0;  // also catches NaN
-  const double bound = gamma_bound(roundings) * abs_tree;
+  const double bound = gamma * abs_tree;
   if (value > bound) return 1;
   if (value < -bound) return -1;
   return 0;
+}
+
+inline int certified_sign(double value, double abs_tree, int roundings) {
+  return certified_sign_with(value, abs_tree, gamma_bound(roundings));
 }
 
 }  // namespace drange::geometry
