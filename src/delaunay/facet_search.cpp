@@ -32,6 +32,7 @@ FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options)
       ranks_(static_cast<std::size_t>(d_ + 2)),
       w_(static_cast<std::size_t>(d_ + 1)),
       w_abs_(static_cast<std::size_t>(d_ + 1)),
+      centre_(static_cast<std::size_t>(d_)),
       lower_(static_cast<std::size_t>(d_)),
       upper_(static_cast<std::size_t>(d_)),
       row_(static_cast<std::size_t>(d_ + 1)) {}
@@ -104,10 +105,10 @@ void FacetSearch::set_candidate(std::int32_t id) {
   for (int k = 0; k < d_; ++k) {
     const double dc = -w_[static_cast<std::size_t>(k)] / (2 * wd);
     const double err = (gamma * w_abs_[static_cast<std::size_t>(k)] + 2 * std::fabs(dc) * ewd) / (2 * (std::fabs(wd) - ewd));
-    row_[static_cast<std::size_t>(k)] = f0_[k] + dc;  // the centre
+    centre_[static_cast<std::size_t>(k)] = f0_[k] + dc;
     radius2 += dc * dc;
     error2 += err * err;
-    magnitude = std::max(magnitude, std::fabs(row_[static_cast<std::size_t>(k)]));
+    magnitude = std::max(magnitude, std::fabs(centre_[static_cast<std::size_t>(k)]));
   }
   const double radius = std::sqrt(radius2);
   // Twice the centre's error (the radius moves by at most as much), plus the roundings of
@@ -119,8 +120,8 @@ void FacetSearch::set_candidate(std::int32_t id) {
     return;
   }
   for (int k = 0; k < d_; ++k) {
-    lower_[static_cast<std::size_t>(k)] = row_[static_cast<std::size_t>(k)] - reach;
-    upper_[static_cast<std::size_t>(k)] = row_[static_cast<std::size_t>(k)] + reach;
+    lower_[static_cast<std::size_t>(k)] = centre_[static_cast<std::size_t>(k)] - reach;
+    upper_[static_cast<std::size_t>(k)] = centre_[static_cast<std::size_t>(k)] + reach;
   }
 }
 

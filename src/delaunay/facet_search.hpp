@@ -79,7 +79,8 @@ class FacetSearch {
   // Per candidate.
   std::int32_t candidate_ = -1;
   std::vector<double> w_, w_abs_;    // sigma I(p, x) = w . r_x, and its absolute tree
-  std::vector<double> lower_, upper_;
+  std::vector<double> centre_;       // of the sphere through F and p
+  std::vector<double> lower_, upper_;  // the query box
 
   // Per point (scratch).
   std::vector<double> row_;
