@@ -59,6 +59,18 @@ void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
   }
   // O(x) = det[f_1 - f_0; ...; x - f_0]: Laplace along the last row over the spatial columns.
   const std::uint32_t spatial = bit(d_) - 1;
+  // Static exactness (as in geometry/predicates.cpp): with dyadic points, every spatial minor
+  // of the facet rows is a multiple of unit^size; if each is below 2^52 of that unit, none was
+  // rounded, and a later dot product a . (x - f0) is exact when its absolute tree is below
+  // 2^52 unit^d. This decides points and kd-tree boxes lying exactly on the facet's hyperplane,
+  // which integer grids have in every hull face.
+  orientation_exact_ = points_.dyadic;
+  for (std::uint32_t mask = 1; orientation_exact_ && mask <= spatial; ++mask) {
+    const int size = __builtin_popcount(mask);
+    if (size < d_ && !(minors_.abs_minor(mask) < std::ldexp(1.0, 52 + points_.unit_exponent * size)))
+      orientation_exact_ = false;
+  }
+  orient_exact_limit_ = std::ldexp(1.0, 52 + points_.unit_exponent * d_);
   for (int j = 0; j < d_; ++j) {
     const double sign = ((d_ - 1 + j) & 1) ? -1.0 : 1.0;
     a_[static_cast<std::size_t>(j)] = sigma * sign * minors_.minor(spatial & ~bit(j));
@@ -125,13 +137,19 @@ void FacetSearch::set_candidate(std::int32_t id) {
   }
 }
 
+int FacetSearch::orientation_sign(double value, double abs_tree) const {
+  const int s = points_.scaled ? certified_sign_with(value, abs_tree, orient_gamma_) : 0;
+  if (s != 0 || !orientation_exact_ || !(abs_tree < orient_exact_limit_)) return s;
+  return value > 0 ? 1 : -1;  // exact: 0 counts as the closed side, like negative values
+}
+
 bool FacetSearch::on_open_side(std::int32_t id) {
   double o = 0.0, o_abs = 0.0;
   for (int k = 0; k < d_; ++k) {
     o += a_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
     o_abs += a_abs_[static_cast<std::size_t>(k)] * std::fabs(row_[static_cast<std::size_t>(k)]);
   }
-  int s = points_.scaled ? certified_sign_with(o, o_abs, orient_gamma_) : 0;
+  int s = orientation_sign(o, o_abs);
   if (s == 0) {
     rows_[static_cast<std::size_t>(d_ - 1)] = points_.point(id);
     const geometry::Frame frame{d_, d_, nullptr, f0_};
@@ -188,7 +206,7 @@ bool FacetSearch::prune(std::int32_t node) const {
     m += std::max(a * dlo, a * dhi);
     m_abs += a_abs_[static_cast<std::size_t>(k)] * std::max(std::fabs(dlo), std::fabs(dhi));
   }
-  return certified_sign_with(m, m_abs, orient_gamma_) < 0;
+  return orientation_sign(m, m_abs) < 0;
 }
 
 std::int32_t FacetSearch::find_apex(const std::int32_t* facet, int sigma, SearchCounters& counters) {

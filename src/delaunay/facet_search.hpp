@@ -45,6 +45,8 @@ class FacetSearch {
   const double* query_lower() const { return lower_.data(); }
   const double* query_upper() const { return upper_.data(); }
   bool prune(std::int32_t node) const;
+  // The sign of sigma O over the computed value, when certified or proved exact; else 0.
+  int orientation_sign(double value, double abs_tree) const;
   bool right_first(const spatial::KdTree::Node& node) const {
     return options_.visit_facet_child_first && centroid_[static_cast<std::size_t>(node.split_axis)] > node.split_value;
   }
@@ -72,6 +74,10 @@ class FacetSearch {
   const double* f0_ = nullptr;
   geometry::MinorTable minors_;
   std::vector<double> a_, a_abs_;    // sigma O(x) = a . (x - f0), and its absolute tree
+  // True when a_ is exact and O(x) is computed without rounding whenever its absolute tree
+  // is below orient_exact_limit_ (dyadic points, see set_facet).
+  bool orientation_exact_ = false;
+  double orient_exact_limit_ = 0.0;
   std::vector<double> centroid_;
   std::vector<const double*> rows_;  // f_1, ..., f_{d-1}, p, q for the exact predicates
   std::vector<std::int64_t> ranks_;  // ranks of f_0, ..., f_{d-1}, p, q

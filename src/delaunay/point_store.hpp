@@ -24,6 +24,11 @@ struct PointStore {
   // of its fast filter. False only for inputs spanning more than 2^1022 in magnitude, which
   // are then decided by the generic predicates alone.
   bool scaled = false;
+  // When every coordinate is an integer multiple of 2^unit_exponent and the extent is small in
+  // those units (a dyadic grid, e.g. integer coordinates), differences of coordinates are
+  // exact, and the search can prove some evaluations exact (facet_search.cpp).
+  bool dyadic = false;
+  int unit_exponent = 0;
 
   const double* point(std::int32_t id) const { return coords.data() + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim); }
 };

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "drange/errors.hpp"
+#include "geometry/error_bound.hpp"
 
 namespace drange::engine {
 
@@ -46,6 +47,20 @@ bool scale_by_power_of_two(std::vector<double>& coords) {
   if (smallest * factor < std::numeric_limits<double>::min()) return false;  // would lose the smallest: keep as is
   for (double& x : coords) x *= factor;
   return true;
+}
+
+// Finds the common power-of-two unit of all coordinates; a dyadic point set has its largest
+// magnitude below 2^50 units, so that every difference of two coordinates is exact.
+void mark_dyadic(const std::vector<double>& coords, PointStore& store) {
+  int unit = std::numeric_limits<int>::max();
+  double largest = 0.0;
+  for (double x : coords) {
+    if (x == 0.0) continue;
+    unit = std::min(unit, geometry::lowest_bit_exponent(x));
+    largest = std::max(largest, std::fabs(x));
+  }
+  store.unit_exponent = unit;
+  store.dyadic = unit != std::numeric_limits<int>::max() && largest < std::ldexp(1.0, 50 + unit);
 }
 
 }  // namespace
@@ -91,6 +106,7 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   for (std::size_t r = 0; r < distinct.size(); ++r)
     std::copy_n(input.point(static_cast<std::size_t>(distinct[r])), d, by_rank.begin() + static_cast<std::ptrdiff_t>(r * static_cast<std::size_t>(d)));
   store.scaled = scale_by_power_of_two(by_rank);
+  mark_dyadic(by_rank, store);
   store.tree.build(by_rank.data(), store.size, d, leaf_size);
   const std::vector<std::int32_t>& order = store.tree.order();
   store.coords.resize(by_rank.size());

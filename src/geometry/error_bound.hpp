@@ -47,4 +47,13 @@ inline int certified_sign(double value, double abs_tree, int roundings) {
   return certified_sign_with(value, abs_tree, gamma_bound(roundings));
 }
 
+// x = odd * 2^e (x != 0): returns e. A set of doubles with smallest such e is a set of
+// integer multiples of 2^e: the basis of the static exactness proofs (predicates.cpp).
+inline int lowest_bit_exponent(double x) {
+  int exponent = 0;
+  const double f = std::frexp(x, &exponent);
+  const auto mantissa = static_cast<unsigned long long>(std::fabs(std::ldexp(f, 53)));
+  return exponent - 53 + __builtin_ctzll(mantissa);
+}
+
 }  // namespace drange::geometry

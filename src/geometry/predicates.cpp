@@ -27,14 +27,6 @@ double squared_distance(int dim, const double* p, const double* q) {
   return s;
 }
 
-// x = odd * 2^e: returns e (x != 0).
-int lowest_bit_exponent(double x) {
-  int exponent = 0;
-  const double f = std::frexp(x, &exponent);
-  const auto mantissa = static_cast<std::uint64_t>(std::fabs(std::ldexp(f, 53)));
-  return exponent - 53 + __builtin_ctzll(mantissa);
-}
-
 // The largest power of two dividing every coordinate of the points (as an exponent), or
 // INT_MAX when all are zero.
 int common_unit_exponent(int dim, const double* base, const double* const* points, int count) {
