@@ -12,7 +12,7 @@ namespace drange {
 enum class Distribution {
   Uniform,    // uniform in the unit cube [0,1)^d
   Ball,       // uniform in the unit ball
-  Sphere,     // uniform on the unit sphere (every point cospherical: a degenerate input)
+  Sphere,     // uniform on the unit sphere (cospherical up to rounding: a degenerate input)
   Gaussian,   // standard normal in every coordinate
   Clustered,  // gaussian clusters of small radius around uniform centres
   Grid,       // the integer grid {0..k-1}^d with k^d >= n, first n points (degenerate input)
