@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "drange/check.hpp"
 #include "drange/delaunay.hpp"
 #include "oracle.hpp"
 #include "peers/peer_case.hpp"
@@ -38,6 +39,9 @@ TEST_P(QhullAgreement, SameSimplicesAsQdelaunay) {
   const std::vector<std::int32_t> theirs = read_simplices(out, c.d + 1);
   const Triangulation ours = delaunay(points);
   EXPECT_EQ(test::canonical(ours.simplices, c.d), test::canonical(theirs, c.d)) << "seed " << seed;
+  // The validator works on another program's output (either orientation) too.
+  const CheckReport report = check_triangulation(points, theirs);
+  EXPECT_TRUE(report.valid) << (report.problems.empty() ? "" : report.problems.front());
   std::remove(in.c_str());
   std::remove(out.c_str());
 }
