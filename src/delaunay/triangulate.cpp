@@ -7,9 +7,11 @@
 //      when already open, and closing a facet links the two simplices as neighbours (2.5).
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
-#include <stdexcept>
 #include <deque>
+#include <stdexcept>
+#include <utility>
 
 #include "delaunay/facet_search.hpp"
 #include "delaunay/facet_table.hpp"
