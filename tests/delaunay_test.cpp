@@ -158,6 +158,9 @@ TEST(DelaunayOracle, DegenerateTinyInputsMatchPerturbedBruteForce) {
       {"square and centre", cloud(2, {0, 0, 1, 0, 0, 1, 1, 1, 0.5, 0.5})},
       {"cube corners and centre", cloud(3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1, 0.5, 0.5, 0.5})},
       {"collinear on the hull", cloud(2, {0, 0, 1, 0, 2, 0, 3, 0, 1.5, 1, 1.5, -2})},
+      // Regression: products underflowing to zero inside the filter, then multiplied by 1e100,
+      // once gave 8 overlapping triangles here (an unscaled input: it spans 5e-324 to 1e100).
+      {"underflowing products", cloud(2, {0, 0, 1e-135, 0, 1, 1e-190, 1e100, 1e-130, -1e100, 5e-324})},
   };
   for (const auto& [name, points] : cases) {
     const Triangulation t = drange::delaunay(points);
@@ -263,6 +266,12 @@ TEST(DelaunayRobustness, HardFamilies) {
     PointCloud c{2, {0, 0, 1e300, 0, 0, 1e300, 1e300, 1e300, 1e-300, 1e-300, 3e-300, 1e-300, 2e-300, 4e-300}};
     for (int i = 0; i < 30; ++i) c.coords.insert(c.coords.end(), {1e300 * u(rng), 1e300 * u(rng)});
     cases.emplace_back("magnitudes 1e-300 to 1e300", c);
+  }
+  {
+    // Regression: every coordinate below 2^-1022 once made the scale factor infinite (SIGFPE).
+    PointCloud c{2, {1e-310, 0, 0, 1e-310, 0, 0}};
+    for (int i = 0; i < 40; ++i) c.coords.insert(c.coords.end(), {1e-310 * u(rng), 1e-310 * u(rng)});
+    cases.emplace_back("all coordinates denormal", c);
   }
   {
     PointCloud c = grid(3, 6);  // a grid jittered below the filters' resolution

@@ -277,5 +277,14 @@ TEST(PredicateTest, PerturbedLiftedSignOnCubeCornersAndGrids) {
   }
 }
 
+// Regression: both products of a 2x2 minor underflow to zero (1e-135 * 1e-190), and a later
+// entry of 1e100 multiplies the lost minor. The filter once certified the wrong sign.
+TEST(Predicates, UnderflowInsideTheExpansionIsNotCertified) {
+  const double a[2] = {0, 0}, b[2] = {1e-135, 0}, c[2] = {1, 1e-190}, q[2] = {1e100, 1e-130};
+  const std::vector<const double*> simplex = {a, b, c};
+  EXPECT_EQ(geometry::in_sphere(2, simplex.data(), q), reference_in_sphere(2, simplex, q));
+  EXPECT_EQ(geometry::in_sphere(2, simplex.data(), q), -1);
+}
+
 }  // namespace
 }  // namespace drange::test

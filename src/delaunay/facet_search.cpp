@@ -43,6 +43,7 @@ void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
   f0_ = points_.point(facet[0]);
   ranks_[0] = points_.rank[static_cast<std::size_t>(facet[0])];
   std::fill(centroid_.begin(), centroid_.end(), 0.0);
+  const geometry::FloatingPointWatch watch;
   for (int i = 0; i < d_; ++i) {
     const double* f = points_.point(facet[i]);
     for (int k = 0; k < d_; ++k) centroid_[static_cast<std::size_t>(k)] += f[k] / d_;
@@ -64,7 +65,7 @@ void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
   // rounded, and a later dot product a . (x - f0) is exact when its absolute tree is below
   // 2^52 unit^d. This decides points and kd-tree boxes lying exactly on the facet's hyperplane,
   // which integer grids have in every hull face.
-  orientation_exact_ = points_.dyadic;
+  orientation_exact_ = points_.dyadic && facet_clean_;
   for (std::uint32_t mask = 1; orientation_exact_ && mask <= spatial; ++mask) {
     const int size = __builtin_popcount(mask);
     if (size < d_ && !(minors_.abs_minor(mask) < std::ldexp(1.0, 52 + points_.unit_exponent * size)))
@@ -76,6 +77,7 @@ void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
     a_[static_cast<std::size_t>(j)] = sigma * sign * minors_.minor(spatial & ~bit(j));
     a_abs_[static_cast<std::size_t>(j)] = minors_.abs_minor(spatial & ~bit(j));
   }
+  facet_clean_ = points_.scaled && watch.clean();
 }
 
 void FacetSearch::reset_box() {
@@ -88,6 +90,7 @@ void FacetSearch::set_candidate(std::int32_t id) {
   ++counters_->candidates;
   const double* p = points_.point(id);
   rows_[static_cast<std::size_t>(d_ - 1)] = p;
+  const geometry::FloatingPointWatch watch;
   ranks_[static_cast<std::size_t>(d_)] = points_.rank[static_cast<std::size_t>(id)];
   double lift = 0.0;
   for (int k = 0; k < d_; ++k) {
@@ -106,10 +109,11 @@ void FacetSearch::set_candidate(std::int32_t id) {
   // The sphere through F and p is {x : I(p, x) / O(p) = 0}; I(p, x) / O(p) is the power of x,
   // so its centre is f0 - w_spatial / (2 w_lift) and it passes through f0. The box is the
   // sphere's bounding box, enlarged by the effect of the minors' error bounds on the centre.
+  candidate_clean_ = facet_clean_ && watch.clean();
   const double gamma = lifted_gamma_;
   const double wd = w_[static_cast<std::size_t>(d_)];
   const double ewd = gamma * w_abs_[static_cast<std::size_t>(d_)];
-  if (!points_.scaled || !(std::fabs(wd) > 2 * ewd) || !std::isfinite(wd)) {  // no trustworthy box
+  if (!candidate_clean_ || !(std::fabs(wd) > 2 * ewd) || !std::isfinite(wd)) {  // no trustworthy box
     reset_box();
     return;
   }
@@ -138,7 +142,7 @@ void FacetSearch::set_candidate(std::int32_t id) {
 }
 
 int FacetSearch::orientation_sign(double value, double abs_tree) const {
-  const int s = points_.scaled ? certified_sign_with(value, abs_tree, orient_gamma_) : 0;
+  const int s = facet_clean_ ? certified_sign_with(value, abs_tree, orient_gamma_) : 0;
   if (s != 0 || !orientation_exact_ || !(abs_tree < orient_exact_limit_)) return s;
   return value > 0 ? 1 : -1;  // exact: 0 counts as the closed side, like negative values
 }
@@ -165,7 +169,7 @@ bool FacetSearch::beats_candidate(std::int32_t id) {
     v += w_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
     v_abs += w_abs_[static_cast<std::size_t>(k)] * std::fabs(row_[static_cast<std::size_t>(k)]);
   }
-  int s = points_.scaled ? certified_sign_with(v, v_abs, lifted_gamma_) : 0;
+  int s = candidate_clean_ ? certified_sign_with(v, v_abs, lifted_gamma_) : 0;
   if (s == 0) {
     rows_[static_cast<std::size_t>(d_)] = points_.point(id);
     ranks_[static_cast<std::size_t>(d_ + 1)] = points_.rank[static_cast<std::size_t>(id)];
@@ -195,7 +199,7 @@ void FacetSearch::consider(std::int32_t id) {
 }
 
 bool FacetSearch::prune(std::int32_t node) const {
-  if (!options_.prune_closed_side || !points_.scaled) return false;
+  if (!options_.prune_closed_side || !facet_clean_) return false;
   // The largest value of sigma O over the node's box, at the corner that maximises each term.
   const double* lo = points_.tree.lower(node);
   const double* hi = points_.tree.upper(node);

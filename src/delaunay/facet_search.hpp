@@ -74,6 +74,10 @@ class FacetSearch {
   const double* f0_ = nullptr;
   geometry::MinorTable minors_;
   std::vector<double> a_, a_abs_;    // sigma O(x) = a . (x - f0), and its absolute tree
+  // True when no underflow, overflow or invalid operation occurred in the facet's minors (and,
+  // below, in the candidate's): the fast filters and the query box rely on it.
+  bool facet_clean_ = true;
+  bool candidate_clean_ = true;
   // True when a_ is exact and O(x) is computed without rounding whenever its absolute tree
   // is below orient_exact_limit_ (dyadic points, see set_facet).
   bool orientation_exact_ = false;

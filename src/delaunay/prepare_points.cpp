@@ -43,9 +43,10 @@ bool scale_by_power_of_two(std::vector<double>& coords) {
   if (largest == 0.0) return true;
   int exponent = 0;
   std::frexp(largest, &exponent);
-  const double factor = std::ldexp(1.0, -exponent);
-  if (smallest * factor < std::numeric_limits<double>::min()) return false;  // would lose the smallest: keep as is
-  for (double& x : coords) x *= factor;
+  // ldexp shifts each value exactly, even when 2^-exponent itself is not a double (inputs
+  // below 2^-1022).
+  if (std::ldexp(smallest, -exponent) < std::numeric_limits<double>::min()) return false;  // would lose the smallest
+  for (double& x : coords) x = std::ldexp(x, -exponent);
   return true;
 }
 

@@ -10,7 +10,11 @@
 // magnitudes as undecided and let the exact code decide.
 #pragma once
 
+#include <cfenv>
 #include <cmath>
+#if defined(__x86_64__) && defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 namespace drange::geometry {
 
@@ -46,6 +50,41 @@ inline int certified_sign_with(double value, double abs_tree, double gamma) {
 inline int certified_sign(double value, double abs_tree, int roundings) {
   return certified_sign_with(value, abs_tree, gamma_bound(roundings));
 }
+
+// Watches the floating-point exception flags over an evaluation: the error bounds above
+// assume that no operation underflowed, overflowed or was invalid, and the flags say so
+// exactly (an underflow flag is raised by every tiny inexact result, even one that ends up
+// multiplied by a huge entry). The library is compiled with -frounding-math so that the
+// compiler keeps floating-point operations between the two calls.
+// On x86-64 the arithmetic is SSE2, whose flags live in MXCSR: reading it directly costs a few
+// cycles, where glibc's fenv functions also save and restore the x87 state. The empty asm
+// statements keep the compiler from moving memory accesses (the watched results) across.
+#if defined(__x86_64__) && defined(__SSE2__)
+class FloatingPointWatch {
+ public:
+  FloatingPointWatch() {
+    const unsigned csr = _mm_getcsr();
+    if (csr & kWatched) _mm_setcsr(csr & ~kWatched);  // flags are sticky: clear them only when set
+    asm volatile("" ::: "memory");
+  }
+  bool clean() const {
+    asm volatile("" ::: "memory");
+    return (_mm_getcsr() & kWatched) == 0;
+  }
+
+ private:
+  static constexpr unsigned kWatched = _MM_EXCEPT_UNDERFLOW | _MM_EXCEPT_OVERFLOW | _MM_EXCEPT_INVALID;
+};
+#else
+class FloatingPointWatch {
+ public:
+  FloatingPointWatch() { std::feclearexcept(kWatched); }
+  bool clean() const { return std::fetestexcept(kWatched) == 0; }
+
+ private:
+  static constexpr int kWatched = FE_UNDERFLOW | FE_OVERFLOW | FE_INVALID;
+};
+#endif
 
 // x = odd * 2^e (x != 0): returns e. A set of doubles with smallest such e is a set of
 // integer multiples of 2^e: the basis of the static exactness proofs (predicates.cpp).

@@ -57,18 +57,6 @@ bool evaluation_is_exact(const MinorTable& minors, int n, int lift_column, int u
   return true;
 }
 
-// The error bound of error_bound.hpp assumes no operation underflowed or overflowed. Every
-// product and partial sum of the expansion is bounded by its minor's absolute tree, and a
-// product far below its minor's tree contributes an underflow error far below the bound's
-// slack; so it suffices that every nonzero absolute tree lies well inside the normal range.
-bool in_normal_range(const MinorTable& minors, int n) {
-  for (std::uint32_t mask = 1; mask < (std::uint32_t{1} << n); ++mask) {
-    const double a = minors.abs_minor(mask);
-    if (a != 0.0 && !(a > kFilterUnderflow && a < kFilterOverflow)) return false;
-  }
-  return true;
-}
-
 // The filter: the sign of the determinant of the rows built by `fill_row` when the error bound
 // certifies it, or when the evaluation provably did not round; nullopt otherwise.
 template <class FillRow>
@@ -76,13 +64,17 @@ std::optional<int> filtered_sign(int n, int entry_roundings, int lift_column, in
   if (n > SubsetTable::kMaxColumns) return std::nullopt;
   MinorTable minors(n);
   std::vector<double> row(static_cast<std::size_t>(n));
+  const FloatingPointWatch watch;
   for (int r = 0; r < n; ++r) {
     fill_row(r, row.data());
     minors.set_row(r, row.data());
   }
+  // An underflow anywhere (entries, products, sums) voids both the error bound and the
+  // exactness proof: only GMP may decide then.
+  if (!watch.clean()) return std::nullopt;
   const std::uint32_t all = (std::uint32_t{1} << n) - 1;
   const double value = minors.minor(all);
-  const int s = in_normal_range(minors, n) ? certified_sign(value, minors.abs_minor(all), laplace_roundings(n, entry_roundings)) : 0;
+  const int s = certified_sign(value, minors.abs_minor(all), laplace_roundings(n, entry_roundings));
   if (s != 0) return s;
   if (evaluation_is_exact(minors, n, lift_column, unit)) return (value > 0) - (value < 0);
   return std::nullopt;
