@@ -5,5 +5,8 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")" && pwd)
 source "$root/scripts/setup.sh"
-if [ $# -eq 0 ]; then set -- delaunay; fi
-exec "${DRANGE_BUILD_DIR:-$root/build}/drange" "$@"
+drange="${DRANGE_BUILD_DIR:-$root/build}/drange"
+# No arguments: the built-in default, whatever standard input is (drange delaunay would read a
+# redirected standard input, as qdelaunay does).
+if [ $# -eq 0 ]; then exec "$drange" delaunay < /dev/null; fi
+exec "$drange" "$@"
