@@ -5,50 +5,30 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 namespace drange::check {
-namespace {
-
-// x = mantissa * 2^(exponent - 53) with an integer mantissa below 2^53 in magnitude.
-void split(double x, double& mantissa, long& exponent) {
-  int e = 0;
-  mantissa = std::ldexp(std::frexp(x, &e), 53);
-  exponent = static_cast<long>(e) - 53;
-}
-
-}  // namespace
 
 IntegerPoints::IntegerPoints(const double* coords, std::size_t n, int dim, const std::vector<std::int32_t>& ids)
     : dim_(dim) {
   auto coordinate = [&](std::int32_t i, int c) { return coords[static_cast<std::size_t>(i) * static_cast<std::size_t>(dim) + static_cast<std::size_t>(c)]; };
-  bool any = false;
-  long highest = 0;
+  // One common power of two for every coordinate (geometry::IntegerScale); the largest
+  // magnitude sets how many limbs each converted coordinate may need.
+  geometry::IntegerScale scale;
+  double largest = 0.0;
   for (const std::int32_t i : ids)
     for (int c = 0; c < dim; ++c) {
-      const double x = coordinate(i, c);
-      if (x == 0.0) continue;
-      double m = 0.0;
-      long e = 0;
-      split(x, m, e);
-      shift_ = any ? std::min(shift_, e) : e;
-      highest = any ? std::max(highest, e) : e;
-      any = true;
+      scale.include(coordinate(i, c));
+      largest = std::max(largest, std::fabs(coordinate(i, c)));
     }
-  const long bits = any ? highest - shift_ + 53 : 1;
-  limbs_ = static_cast<std::size_t>((bits + GMP_NUMB_BITS - 1) / GMP_NUMB_BITS);
+  shift_ = scale.shift();
+  limbs_ = std::max<std::size_t>(1, mpz_size(scale.integer(largest).get_mpz_t()));
   magnitude_.assign(n * static_cast<std::size_t>(dim) * limbs_, 0);
   size_.assign(n * static_cast<std::size_t>(dim), 0);
-  mpz_class value;
   for (const std::int32_t i : ids)
     for (int c = 0; c < dim; ++c) {
       const double x = coordinate(i, c);
       if (x == 0.0) continue;
-      double m = 0.0;
-      long e = 0;
-      split(x, m, e);
-      mpz_set_d(value.get_mpz_t(), m);
-      mpz_mul_2exp(value.get_mpz_t(), value.get_mpz_t(), static_cast<mp_bitcnt_t>(e - shift_));
+      const mpz_class value = scale.integer(x);
       const std::size_t slot = static_cast<std::size_t>(i) * static_cast<std::size_t>(dim) + static_cast<std::size_t>(c);
       size_t count = 0;
       mpz_export(&magnitude_[slot * limbs_], &count, -1, sizeof(mp_limb_t), 0, GMP_NAIL_BITS, value.get_mpz_t());

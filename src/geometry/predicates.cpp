@@ -3,7 +3,6 @@
 #include "geometry/predicates.hpp"
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <limits>
 #include <numeric>
