@@ -4,7 +4,8 @@
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-packages=(g++ cmake make libgmp-dev libgtest-dev qhull-bin libcgal-dev libeigen3-dev libboost-dev)
+packages=(g++ cmake make libgmp-dev libgtest-dev qhull-bin libcgal-dev libeigen3-dev libboost-dev
+          python3-numpy python3-scipy librsvg2-bin)
 
 missing=()
 for p in "${packages[@]}"; do

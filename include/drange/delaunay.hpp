@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,10 @@ const char* search_variant_names();
 struct Options {
   SearchOptions search;
   bool compute_neighbors = true;  // fill Triangulation::neighbors
+  // Called now and then from the computing thread (about every 2^16 simplices) with the
+  // number of simplices found so far; the CLI draws its progress line with it. It may throw
+  // to abandon the run. Empty: never called.
+  std::function<void(std::size_t simplices)> progress;
 };
 
 // One input point that is an exact copy of an earlier one; it is left out of the triangulation.

@@ -1,0 +1,105 @@
+// drange/voronoi.hpp: the Voronoi diagram of points in E^d, read off their Delaunay
+// triangulation (paper, section 2.5: the Voronoi vertices are the circumcentres of the
+// Delaunay simplices, and two cells touch where their points share a Delaunay edge), with
+// the names and meaning of scipy.spatial.Voronoi, and the cells clipped to a box in 2D/3D.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "drange/delaunay.hpp"
+#include "drange/points.hpp"
+
+namespace drange {
+
+// Ragged rows of int32 in compressed form: row r is values[offsets[r] .. offsets[r+1]).
+struct IndexLists {
+  std::vector<std::int64_t> offsets{0};
+  std::vector<std::int32_t> values;
+
+  std::size_t size() const { return offsets.size() - 1; }
+  std::size_t row_size(std::size_t r) const { return static_cast<std::size_t>(offsets[r + 1] - offsets[r]); }
+  const std::int32_t* row(std::size_t r) const { return values.data() + offsets[r]; }
+  void end_row() { offsets.push_back(static_cast<std::int64_t>(values.size())); }
+};
+
+// The diagram, named as in scipy.spatial.Voronoi. Vertex id -1 is the point at infinity.
+//   vertices        num_vertices x dim circumcentres. Simplices sharing one circumsphere
+//                   (cospherical points: every cell of an integer grid) share one vertex;
+//                   that is decided exactly, by the in-sphere predicate, never by a tolerance.
+//   simplex_vertex  for every Delaunay simplex, the id of its (merged) Voronoi vertex.
+//   ridge_points    num_ridges x 2 input indices (p < q) whose cells share a (d-1)-face.
+//   ridge_vertices  for each ridge, its Voronoi vertex ids, with -1 when it is unbounded; in
+//                   2D the two ends, in 3D the polygon in cyclic order.
+//   regions         one per distinct input point: its cell's vertex ids, with -1 when the
+//                   cell is unbounded; in 2D in counter-clockwise order (-1 stands where the
+//                   cell opens to infinity).
+//   point_region    for every input point, its region; an exact duplicate shares the
+//                   region of the point it copies.
+//   volumes         for each region, the d-volume of its cell, +infinity when unbounded
+//                   (any d: area in 2D).
+struct Voronoi {
+  int dim = 0;
+  std::size_t num_points = 0;
+  std::vector<double> vertices;
+  std::vector<std::int32_t> simplex_vertex;
+  std::vector<std::int32_t> ridge_points;
+  IndexLists ridge_vertices;
+  IndexLists regions;
+  std::vector<std::int32_t> point_region;
+  std::vector<std::int32_t> region_point;  // the input point (the first of its copies) of each region
+  std::vector<double> volumes;
+
+  std::size_t num_vertices() const { return dim > 0 ? vertices.size() / static_cast<std::size_t>(dim) : 0; }
+  std::size_t num_ridges() const { return ridge_points.size() / 2; }
+  const double* vertex(std::size_t v) const { return vertices.data() + v * static_cast<std::size_t>(dim); }
+};
+
+// An axis-aligned box: lower corner and upper corner, dim values each.
+struct Box {
+  std::vector<double> lower, upper;
+};
+
+// The default clipping box: the points' bounding box, enlarged by `margin` times its extent
+// on every side (at least by 1 ulp-safe absolute amount when the extent is zero).
+Box default_clip_box(PointsView points, double margin = 0.1);
+
+// Voronoi cells clipped to a box, for d = 2 and 3. Cell c is the cell of region c
+// (Voronoi::regions), intersected with the box; the cells tile the box.
+//   points         the cells' corner coordinates, dim per corner; each cell has its own corners.
+//   faces          the boundary loops: in 2D one loop per cell, the polygon counter-clockwise;
+//                  in 3D one loop per face, counter-clockwise seen from outside the cell.
+//                  Values index `points`.
+//   cell_faces     cell c owns faces [cell_faces[c], cell_faces[c+1]).
+//   volumes        area (2D) or volume (3D) of each clipped cell.
+// A cell that misses the box is empty (no faces, volume 0).
+struct ClippedCells {
+  int dim = 0;
+  Box box;
+  std::vector<double> points;
+  IndexLists faces;
+  std::vector<std::int64_t> cell_faces{0};
+  std::vector<double> volumes;
+
+  std::size_t size() const { return cell_faces.size() - 1; }
+};
+
+struct VoronoiOptions {
+  Options delaunay;            // how the triangulation is computed
+  bool cell_volumes = true;    // fill Voronoi::volumes
+};
+
+// The Voronoi diagram of the points, computed from their Delaunay triangulation.
+// Throws as drange::delaunay does.
+Voronoi voronoi(PointsView points, const VoronoiOptions& options = {});
+
+// The same, from a triangulation already computed for these points by drange::delaunay
+// (its neighbours must be present).
+Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell_volumes = true);
+
+// Clips every cell of the diagram to the box (d = 2 or 3). Throws UsageError for another
+// dimension or a box that is empty, not finite, or of the wrong dimension.
+ClippedCells clip_cells(PointsView points, const Voronoi& diagram, const Box& box);
+
+}  // namespace drange
