@@ -17,7 +17,7 @@
 #include <string>
 #include <utility>
 
-#include "check/key_groups.hpp"
+#include "util/key_groups.hpp"
 #include "geometry/predicates.hpp"
 
 namespace drange::check {
@@ -121,7 +121,7 @@ FacetSummary run(PointsView points, const SimplexTable& table, ProblemLog& log) 
     return table.row(s)[k + (k >= j ? 1 : 0)];
   };
   FacetChecker checker(points, table, log);
-  for_each_key_group<Item>(points.n, table.dim, for_each_item, key,
+  util::for_each_key_group<Item>(points.n, table.dim, for_each_item, key,
                            [&](const Item* group, std::size_t size) { checker.visit(group, size); });
   return checker.take_summary();
 }

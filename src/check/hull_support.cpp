@@ -41,7 +41,8 @@
 #include <utility>
 
 #include "check/facet_plane.hpp"
-#include "check/key_groups.hpp"
+#include "util/key_groups.hpp"
+#include "util/union_find.hpp"
 #include "spatial/kdtree.hpp"
 
 namespace drange::check {
@@ -75,7 +76,7 @@ void for_each_boundary_ridge(const SupportInput& in, Visit visit) {
       sides.push_back({static_cast<std::size_t>(group[i] / width), static_cast<int>(group[i] % width)});
     visit(sides.data(), count);
   };
-  for_each_key_group<std::uint64_t>(in.points.n, d - 1, for_each_item, key, visit_group);
+  util::for_each_key_group<std::uint64_t>(in.points.n, d - 1, for_each_item, key, visit_group);
 }
 
 std::string facet_text(const SimplexTable& t, FacetRef f) {
@@ -90,22 +91,7 @@ void set_plane(FacetPlane& plane, PointsView points, const SimplexTable& t, Face
   plane.set(corners.data());
 }
 
-class UnionFind {
- public:
-  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::size_t{0}); }
-  std::size_t find(std::size_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);  // the smallest index represents
-  }
-
- private:
-  std::vector<std::size_t> parent_;
-};
+using util::UnionFind;
 
 // ---- The certificate: (a), (b), (c) above. ----
 

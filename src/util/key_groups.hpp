@@ -1,4 +1,4 @@
-// check/key_groups.hpp: finds the items that share a key, where a key is a short sorted list
+// util/key_groups.hpp: finds the items that share a key, where a key is a short sorted list
 // of vertex ids (a facet, a ridge). Used for facet pairing and for ridge adjacency.
 //
 // No hashing: a counting sort on the first id of the key puts the items into one bucket per
@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace drange::check {
+namespace drange::util {
 
 // `for_each_item(f)` calls f(item) for every item (it is called twice, and must enumerate the
 // same items both times); `key(item, k)` is id k (0 <= k < key_length) of the item's key, ids in
@@ -75,4 +75,4 @@ void for_each_key_group(std::size_t vertex_count, int key_length, ForEachItem fo
   }
 }
 
-}  // namespace drange::check
+}  // namespace drange::util

@@ -1,0 +1,24 @@
+// voronoi/circumcentre.hpp: circumcentres, the Voronoi vertices (paper, section 2.5).
+//
+// Accuracy: the centre is solved relative to the first vertex (so a cluster far from the
+// origin loses no digits), with partial pivoting, in long double (64-bit significand on
+// x86-64), and rounded to double once at the end. A sliver's ill-conditioned system thus
+// keeps about 11 more bits than a double solve would.
+#pragma once
+
+namespace drange::diagram {
+
+// The largest dimension the solvers accept (the engine's own limit).
+inline constexpr int kMaxDim = 11;
+
+// The circumcentre of a full-dimensional simplex (dim+1 vertices) written to `centre`.
+// Returns the Hadamard ratio  prod_i |v_i - v_0| / |det[v_1 - v_0, ..., v_d - v_0]|  (>= 1):
+// how close the simplex is to flat, which bounds how much the solve can amplify rounding.
+// Returns +infinity for a flat simplex (then `centre` is not set).
+double simplex_circumcentre(int dim, const double* const* vertices, double* centre);
+
+// The centre of the smallest sphere through k+1 affinely independent points of E^dim
+// (k <= dim): the point of their affine hull equidistant from all of them.
+void face_circumcentre(int dim, int k, const double* const* points, double* centre);
+
+}  // namespace drange::diagram

@@ -1,0 +1,71 @@
+// voronoi/regions.cpp: each point's cell as the list of its Voronoi vertices.
+//
+// The cell of p has one vertex per class among the simplices around p, and is unbounded
+// exactly when p is on the convex hull (a hull facet holds p). In 2D the triangles around p,
+// taken counter-clockwise, give the cell's vertices counter-clockwise.
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "voronoi/diagram_parts.hpp"
+
+namespace drange::diagram {
+namespace {
+
+bool on_hull(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence, std::int32_t p) {
+  const int width = t.dim + 1;
+  for (const std::int32_t* it = incidence.begin(static_cast<std::size_t>(p)); it != incidence.end(static_cast<std::size_t>(p)); ++it) {
+    const std::int32_t* row = t.simplex(static_cast<std::size_t>(*it));
+    for (int k = 0; k < width; ++k)
+      if (row[k] != p && classes.of_hull_facet[static_cast<std::size_t>(*it) * static_cast<std::size_t>(width) + static_cast<std::size_t>(k)] >= 0)
+        return true;
+  }
+  return false;
+}
+
+// Appends p's region: -1 first when the cell is unbounded, then its vertices (2D: in
+// counter-clockwise order; otherwise ascending).
+void append_region(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence, std::int32_t p,
+                   IndexLists& out) {
+  const std::size_t row_start = out.values.size();
+  if (t.dim == 2) {
+    bool closed;
+    const std::vector<std::int32_t> around = triangles_around(t, p, *incidence.begin(static_cast<std::size_t>(p)), closed);
+    if (!closed) out.values.push_back(-1);
+    for (const std::int32_t s : around) {
+      const std::int32_t cls = classes.of_simplex[static_cast<std::size_t>(s)];
+      if (out.values.size() == row_start || out.values.back() != cls) out.values.push_back(cls);
+    }
+    if (closed && out.values.size() - row_start > 1 && out.values.back() == out.values[row_start]) out.values.pop_back();
+    return;
+  }
+  if (on_hull(t, classes, incidence, p)) out.values.push_back(-1);
+  const std::size_t first_vertex = out.values.size();
+  for (const std::int32_t* it = incidence.begin(static_cast<std::size_t>(p)); it != incidence.end(static_cast<std::size_t>(p)); ++it)
+    out.values.push_back(classes.of_simplex[static_cast<std::size_t>(*it)]);
+  std::sort(out.values.begin() + static_cast<std::ptrdiff_t>(first_vertex), out.values.end());
+  out.values.erase(std::unique(out.values.begin() + static_cast<std::ptrdiff_t>(first_vertex), out.values.end()),
+                   out.values.end());
+}
+
+}  // namespace
+
+void build_regions(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence, Voronoi& out) {
+  // A duplicate has no simplex; it takes the region of the point it copies, which comes
+  // earlier in the input.
+  std::vector<std::int32_t> original(t.num_points, -1);
+  for (const Duplicate& dup : t.duplicates) original[static_cast<std::size_t>(dup.index)] = static_cast<std::int32_t>(dup.original);
+  out.point_region.assign(t.num_points, -1);
+  for (std::size_t p = 0; p < t.num_points; ++p) {
+    if (original[p] >= 0) {
+      out.point_region[p] = out.point_region[static_cast<std::size_t>(original[p])];
+      continue;
+    }
+    out.point_region[p] = static_cast<std::int32_t>(out.regions.size());
+    out.region_point.push_back(static_cast<std::int32_t>(p));
+    append_region(t, classes, incidence, static_cast<std::int32_t>(p), out.regions);
+    out.regions.end_row();
+  }
+}
+
+}  // namespace drange::diagram
