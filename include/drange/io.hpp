@@ -12,13 +12,20 @@
 
 namespace drange {
 
-// Reads points from `path` ("-" means standard input). Two layouts are recognised:
+// Reads points from `path` ("-" means standard input). Three layouts are recognised:
 //   Qhull: line 1 the dimension, line 2 the count, then one point per line;
 //   rows:  one point per line, numbers separated by whitespace or commas, the dimension taken
-//          from the first row (an optional header row of non-numbers is skipped).
-// Blank lines and lines starting with '#' are ignored. Throws InputError naming the file and
-// the line for: unreadable path, malformed number, wrong number of coordinates, NaN or
-// infinite value, a count that does not match the points present.
+//          from the first row (an optional header row of non-numbers is skipped);
+//   NumPy: a .npy file (numpy.save), recognised by its magic bytes "\x93NUMPY" (or a name
+//          ending in .npy), format version 1.0, 2.0 or 3.0, holding one array of shape
+//          (points, dimension) of float64 or float32 ('<f8', '>f8', '<f4', '>f4'), in C or
+//          Fortran order.
+// In text, blank lines and lines starting with '#' are ignored. Throws InputError naming the
+// file and the line for: unreadable path, malformed number, wrong number of coordinates, NaN
+// or infinite value, a count that does not match the points present. For a .npy file the
+// message names the file and the problem: bad magic or version, malformed header,
+// unsupported dtype, a shape that is not 2-D, truncated data (bytes needed and present), or
+// the zero-based row and column of a NaN or infinite value.
 PointCloud read_points(const std::string& path);
 PointCloud parse_points(std::istream& in, const std::string& name);
 

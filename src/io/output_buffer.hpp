@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <string_view>
 
 namespace drange::io {
 
@@ -20,6 +21,11 @@ class OutputBuffer {
 
   void put(char c) {
     buffer_.push_back(c);
+    if (buffer_.size() >= kFlushAt) flush();
+  }
+
+  void put_text(std::string_view text) {
+    buffer_.append(text.data(), text.size());
     if (buffer_.size() >= kFlushAt) flush();
   }
 

@@ -1,5 +1,6 @@
 // io/read_points.cpp: reading a point cloud from Qhull's input format or from plain rows
-// (whitespace or comma separated, CSV with a header row). See drange/io.hpp for the formats
+// (whitespace or comma separated, CSV with a header row), or from a NumPy .npy file, which
+// is recognised by its magic bytes (io/read_npy.cpp). See drange/io.hpp for the formats
 // and io/text_lines.hpp for what counts as a line and a field.
 //
 // Layout detection: the input is in Qhull's format when its first content line holds an
@@ -18,6 +19,7 @@
 
 #include "drange/io.hpp"
 #include "io/input_error.hpp"
+#include "io/npy.hpp"
 #include "io/parse_number.hpp"
 #include "io/read_text.hpp"
 #include "io/text_lines.hpp"
@@ -200,6 +202,7 @@ PointCloud parse_rows(io::LineScanner& scanner, const std::string& name) {
 }
 
 PointCloud parse_text(std::string_view text, const std::string& name) {
+  if (io::is_numpy_input(text, name)) return io::parse_npy_points(text, name);
   io::LineScanner scanner(text);
   const Layout layout = detect_layout(scanner, name);
   PointCloud cloud = layout.qhull ? parse_qhull(scanner, layout, name) : parse_rows(scanner, name);
