@@ -1,0 +1,94 @@
+// voronoi/convex_polyhedron.hpp: a convex polyhedron cut by half-spaces, the 3D shape of
+// clip_cells. Coordinates are relative to the cell's point.
+//
+// The polyhedron is a list of corners and of faces, each face a loop of corner ids,
+// counter-clockwise seen from outside. A clip decides the side of every corner once
+// (half_space.hpp) and derives everything else from those sides, never from a second
+// floating-point test, so the faces always fit together:
+//   - each face keeps its corners inside or on the plane, and gets the crossing point of
+//     every edge running from a corner inside to one outside. The crossing point is made once
+//     per edge and shared by the two faces of that edge;
+//   - a face with no corner strictly inside is dropped (it lay beyond or on the plane);
+//   - the new face on the plane (the cap) is closed from the edges that lost their partner:
+//     every edge of a closed surface is walked once in each direction, so the kept faces'
+//     edges on the plane whose reverse is missing, reversed, are the cap's edges, and they
+//     chain into its loop, counter-clockwise seen from outside;
+//   - corners joined by an edge at most tol long are merged (only edges on the plane can be
+//     that short), so no later clip sees a cluster of corners closer than its tolerance.
+// No angles are sorted, so corners that nearly coincide cannot come out in the wrong order.
+// Should rounding ever make the edges on the plane not form one loop, the cap's corners are
+// ordered by angle instead (a fallback; see add_cap).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "voronoi/half_space.hpp"
+
+namespace drange::cells {
+
+class ConvexPolyhedron {
+ public:
+  using Corner = std::array<double, 3>;
+
+  // The box [lower, upper]: 8 corners, 6 quadrilaterals.
+  void set_box(const double* lower, const double* upper);
+
+  // Keeps the part where normal . x <= offset (normal a unit vector); corners within tol of
+  // the plane are on it. Afterwards no edge is tol long or shorter (they are merged away).
+  ClipResult clip(const double* normal, double offset, double tol);
+
+  // The volume: the tetrahedra from the corners' centroid to a fan of every face.
+  double volume() const;
+
+  bool empty() const { return faces_.empty(); }
+  std::size_t num_corners() const { return corners_.size(); }
+  const double* corner(std::size_t v) const { return corners_[v].data(); }
+  std::size_t num_faces() const { return face_start_.size() - 1; }
+  std::size_t face_size(std::size_t f) const { return static_cast<std::size_t>(face_start_[f + 1] - face_start_[f]); }
+  std::int32_t face_corner(std::size_t f, std::size_t i) const { return faces_[static_cast<std::size_t>(face_start_[f]) + i]; }
+
+ private:
+  using Edge = std::pair<std::int32_t, std::int32_t>;
+
+  void clear();
+  // The id, in the polyhedron being built, of old corner v (given one on first use).
+  std::int32_t kept_corner(std::int32_t v, bool on_plane);
+  // The id of the crossing point on the edge a-b (made on first use).
+  std::int32_t crossing_corner(std::int32_t a, std::int32_t b);
+  // Merges the corners joined by an edge no longer than tol and drops the faces left with
+  // fewer than 3 corners.
+  void merge_short_edges(double tol);
+  // Closes the polyhedron being built with its face on the plane.
+  void add_cap(const double* normal);
+  bool chain_cap();
+  void sort_cap_by_angle(const double* normal);
+  // Appends loop_ to the polyhedron being built.
+  void end_face();
+  // Makes the polyhedron being built the current one.
+  void swap_in();
+
+  std::vector<Corner> corners_;
+  std::vector<std::int32_t> face_start_{0}, faces_;
+  double radius_ = 0;  // max_norm(corners_)
+
+  // The polyhedron being built by clip() and merge_short_edges(), and their scratch space.
+  std::vector<Corner> next_corners_;
+  std::vector<char> next_on_plane_;
+  std::vector<std::int32_t> next_face_start_, next_faces_;
+  std::vector<double> distance_;
+  std::vector<Side> side_;
+  std::vector<std::int32_t> new_id_;
+  struct Crossing {
+    Edge edge;  // old corner ids, first < second
+    std::int32_t id;
+  };
+  std::vector<Crossing> crossings_;
+  std::vector<std::int32_t> loop_;
+  std::vector<Edge> plane_edges_, cap_edges_;
+};
+
+}  // namespace drange::cells
