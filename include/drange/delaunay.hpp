@@ -27,12 +27,17 @@ SearchOptions search_variant(const std::string& name);
 // The names accepted by search_variant, for help texts.
 const char* search_variant_names();
 
+// How often Options::progress is called: every kProgressInterval simplices found.
+inline constexpr std::size_t kProgressInterval = std::size_t{1} << 16;
+
 struct Options {
   SearchOptions search;
   bool compute_neighbors = true;  // fill Triangulation::neighbors
-  // Called now and then from the computing thread (about every 2^16 simplices) with the
-  // number of simplices found so far; the CLI draws its progress line with it. It may throw
-  // to abandon the run. Empty: never called.
+  // Called from the computing thread every kProgressInterval simplices with the number of
+  // simplices found so far, and once more when the triangulation is complete, with the final
+  // count: that last call is the only one whose count is not a multiple of kProgressInterval
+  // or repeats the previous count. The CLI draws its progress line with it. It may throw to
+  // abandon the run: delaunay() then throws that exception. Empty: never called.
   std::function<void(std::size_t simplices)> progress;
 };
 

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <deque>
+#include <functional>
 #include <stdexcept>
 #include <utility>
 
@@ -68,6 +69,26 @@ class FacetQueue {
   std::deque<std::int32_t> data_;
 };
 
+// Calls Options::progress every kProgressInterval simplices, counting down so that the main
+// loop pays one decrement and one test per simplex (no clock read: the callback reads its own
+// clock, at most once per call).
+class ProgressCountdown {
+ public:
+  explicit ProgressCountdown(const std::function<void(std::size_t)>& report) : report_(report) {}
+  void simplex_found(std::size_t found) {
+    if (--countdown_ != 0) return;
+    countdown_ = kProgressInterval;
+    if (report_) report_(found);
+  }
+  void finished(std::size_t found) const {
+    if (report_) report_(found);
+  }
+
+ private:
+  const std::function<void(std::size_t)>& report_;
+  std::size_t countdown_ = kProgressInterval;
+};
+
 }  // namespace
 
 Triangulation delaunay(PointsView input, const Options& options) {
@@ -96,6 +117,7 @@ Triangulation delaunay(PointsView input, const Options& options) {
   FacetQueue queue(d);
   engine::FacetSearch search(points, options.search);
   engine::SearchCounters counters;
+  ProgressCountdown progress(options.progress);
   queue.push(first.ids.data(), engine::FacetOwner{-1, -1}, first.sigma);
 
   std::vector<std::int32_t> facet(static_cast<std::size_t>(d));
@@ -141,6 +163,7 @@ Triangulation delaunay(PointsView input, const Options& options) {
         queue.push(other_facet.data(), engine::FacetOwner{s, f}, -parity * to_end);
       }
     }
+    progress.simplex_found(static_cast<std::size_t>(s) + 1);
   }
   stats.seconds_search = seconds_since(phase);
   if (table.size() != 0) throw std::logic_error("delaunay: open facets left after the search");
@@ -155,6 +178,7 @@ Triangulation delaunay(PointsView input, const Options& options) {
   stats.exact_fallbacks = geometry::exact_evaluations() - exact_before;
   stats.seconds_total = seconds_since(start);
   stats.peak_rss_bytes = peak_rss_bytes();
+  progress.finished(stats.simplices);
   return result;
 }
 
