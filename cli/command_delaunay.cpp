@@ -1,68 +1,56 @@
 // cli/command_delaunay.cpp: `drange delaunay`, the triangulation of a point file, written in
 // the `qdelaunay i` layout so that scripts written for Qhull keep working.
-#include <unistd.h>
-
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "args.hpp"
+#include "command_common.hpp"
 #include "commands.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
+#include "drange/formats.hpp"
 #include "drange/io.hpp"
+#include "drange/svg.hpp"
 #include "exit_codes.hpp"
+#include "progress.hpp"
 
 namespace drange::cli {
 namespace {
 
 const std::vector<OptionSpec> kOptions = {
-    {"output", 'o', true}, {"neighbors", 0, true}, {"stats", 0, false},
-    {"variant", 0, true},  {"quiet", 'q', false},
+    {"output", 'o', true}, {"format", 0, true},  {"neighbors", 0, true}, {"svg", 0, true},
+    {"circles", 0, false}, {"stats", 0, false}, {"variant", 0, true},   {"quiet", 'q', false},
 };
-
-// How many duplicates the report lists by index before it abbreviates.
-constexpr std::size_t kDuplicatesListed = 10;
-
-// "3 duplicate points left out (point 17 = point 4, point 20 = point 4, point 21 = point 9)".
-std::string duplicates_message(const std::vector<Duplicate>& duplicates) {
-  std::string message = std::to_string(duplicates.size()) +
-                        (duplicates.size() == 1 ? " duplicate point left out (" : " duplicate points left out (");
-  for (std::size_t i = 0; i < duplicates.size() && i < kDuplicatesListed; ++i) {
-    if (i > 0) message += ", ";
-    message += "point " + std::to_string(duplicates[i].index) + " = point " + std::to_string(duplicates[i].original);
-  }
-  if (duplicates.size() > kDuplicatesListed) message += ", ...";
-  return message + ")";
-}
-
-void check_outputs(const std::string& output, const Arguments& arguments) {
-  if (!arguments.has("neighbors")) return;
-  const std::string neighbors = arguments.value_or("neighbors", "");
-  if (neighbors == output) {
-    throw UsageError(output == "-" ? "the simplices and --neighbors cannot both go to standard output"
-                                   : "--output and --neighbors name the same file '" + output + "'");
-  }
-}
 
 int triangulate_file(const std::string& input, const Arguments& arguments) {
   const std::string output = arguments.value_or("output", "-");
-  check_outputs(output, arguments);
+  expect_distinct_outputs(arguments, {"neighbors", "svg"}, output);
+  const OutputFormat format = arguments.has("format") ? output_format_from_name(arguments.value_or("format", ""))
+                                                      : output_format_from_path(output, OutputFormat::Qhull);
+  const bool quiet = arguments.has("quiet");
   Options options;
   options.search = search_variant(arguments.value_or("variant", "full"));
-  options.compute_neighbors = arguments.has("neighbors");
+  options.compute_neighbors = arguments.has("neighbors") || format != OutputFormat::Qhull;
 
   const PointCloud points = read_points(input);
+  options.progress = make_progress_reporter(points.size(), points.dim, quiet);
   const Triangulation triangulation = delaunay(points, options);
-  const int per_row = triangulation.dim + 1;
 
-  if (!triangulation.duplicates.empty() && !arguments.has("quiet")) {
+  if (!triangulation.duplicates.empty() && !quiet)
     std::cerr << "drange: " << duplicates_message(triangulation.duplicates) << '\n';
+  write_delaunay(output, format, points, triangulation);
+  if (arguments.has("neighbors")) {
+    write_file_atomically(arguments.value_or("neighbors", ""), [&](std::ostream& out) {
+      write_index_rows(out, triangulation.neighbors, triangulation.dim + 1);
+    });
   }
-  write_file_atomically(output, [&](std::ostream& out) { write_index_rows(out, triangulation.simplices, per_row); });
-  if (options.compute_neighbors) {
-    write_file_atomically(arguments.value_or("neighbors", ""),
-                          [&](std::ostream& out) { write_index_rows(out, triangulation.neighbors, per_row); });
+  if (arguments.has("svg")) {
+    SvgOptions svg;
+    svg.circumcircles = arguments.has("circles");
+    svg.voronoi = false;
+    write_file_atomically(arguments.value_or("svg", ""),
+                          [&](std::ostream& out) { write_svg(out, points, triangulation, nullptr, svg); });
   }
   if (arguments.has("stats")) std::cerr << triangulation.stats.summary() << '\n';
   return kExitSuccess;
@@ -82,14 +70,20 @@ std::string delaunay_help() {
              "\n"
              "Options:\n"
              "  -o, --output FILE     where to write the simplices (default -, standard output)\n"
+             "      --format NAME     the output format: ") + output_format_names() + std::string(
+             "\n"
+             "                        (default: from FILE's extension .json .npz .vtu .off,\n"
+             "                        otherwise qhull, the `qdelaunay i` layout)\n"
              "      --neighbors FILE  also write each simplex's neighbours: the simplex opposite\n"
              "                        vertex k of simplex s is in row s, column k; -1 on the hull\n"
+             "      --svg FILE        also draw the triangulation (2D) as an SVG picture\n"
+             "      --circles         draw the circumcircles too (with --svg)\n"
              "      --stats           print the run's statistics (key=value) to standard error\n"
              "      --variant NAME    the search variant, to measure each optimisation: one of\n"
              "                        ") +
          search_variant_names() +
          " (default full)\n"
-         "  -q, --quiet           do not report duplicate points\n"
+         "  -q, --quiet           no progress line, no report of duplicate points\n"
          "  -h, --help            show this text\n"
          "\n"
          "Input: Qhull's format (dimension, count, then one point per line: what rbox and\n"
@@ -97,14 +91,19 @@ std::string delaunay_help() {
          "or commas and an optional header row (CSV). Blank lines and '#' comments are ignored.\n"
          "The dimension must be at least 2. Exact duplicates are left out and reported.\n"
          "\n"
-         "Output: the `qdelaunay i` layout: the number of simplices, then one line of d+1\n"
-         "zero-based point indices per simplex, each simplex positively oriented. Files are\n"
-         "replaced only when complete: a failed run leaves an existing file untouched.\n"
+         "Output: by default the `qdelaunay i` layout: the number of simplices, then one line of\n"
+         "d+1 zero-based point indices per simplex, each simplex positively oriented. json\n"
+         "holds scipy's names (simplices, neighbors, coplanar); npz is NumPy's archive of the\n"
+         "same arrays (numpy.load); vtu is for ParaView (2D/3D); off is the triangles (2D) or\n"
+         "the hull surface (3D). Files are replaced only when complete: a failed run leaves an\n"
+         "existing file untouched. Long runs draw a progress line on standard error when it is\n"
+         "a terminal.\n"
          "\n"
          "Examples:\n"
          "  drange generate uniform 100000 3 -o points.txt\n"
          "  drange delaunay points.txt -o simplices.txt --neighbors neighbors.txt\n"
          "  rbox 1000 D4 | drange delaunay - > simplices.txt\n"
+         "  drange delaunay points2d.txt -o mesh.vtu --svg mesh.svg\n"
          "\n" +
          exit_codes_help();
 }
@@ -114,11 +113,10 @@ int run_delaunay(const std::vector<std::string>& args) {
   expect_positionals(arguments, {"INPUT"}, 0);
   // Without INPUT, points piped or redirected into standard input are read, as qdelaunay does
   // (`drange delaunay < points.txt`); a terminal or an empty stream gets the demonstration.
-  if (arguments.positionals.empty() && !isatty(STDIN_FILENO) && std::cin.peek() != std::char_traits<char>::eof())
-    return triangulate_file("-", arguments);
+  if (arguments.positionals.empty() && standard_input_has_points()) return triangulate_file("-", arguments);
   if (arguments.positionals.empty()) {
     // The demonstration writes no files: an output option without INPUT is a mistake.
-    for (const char* option : {"output", "neighbors"}) {
+    for (const char* option : {"output", "neighbors", "format", "svg", "circles"}) {
       if (arguments.has(option)) {
         throw UsageError(std::string("--") + option + " needs an INPUT file (without INPUT, a demonstration runs)");
       }

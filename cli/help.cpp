@@ -21,10 +21,12 @@ std::string general_help() {
   return std::string(
              "Usage: drange COMMAND [ARGUMENTS] [OPTIONS]\n"
              "\n"
-             "Delaunay triangulations in any dimension (the D-Range direct algorithm, exact predicates).\n"
+             "Delaunay triangulations and Voronoi diagrams in any dimension (the D-Range direct\n"
+             "algorithm, exact predicates).\n"
              "\n"
              "Commands:\n"
              "  delaunay [INPUT] [-o OUTPUT]    triangulate points (no INPUT: a demonstration)\n"
+             "  voronoi [INPUT] [-o OUTPUT]     the Voronoi diagram, cells clipped to a box, volumes\n"
              "  check POINTS SIMPLICES          validate a triangulation exactly (ours or anyone's)\n"
              "  generate DIST N D [-o FILE]     write random or grid test points\n"
              "  help [COMMAND]                  show this text, or a command's options\n"

@@ -23,6 +23,7 @@ struct Command {
 
 constexpr Command kCommands[] = {
     {"delaunay", run_delaunay, delaunay_help},
+    {"voronoi", run_voronoi, voronoi_help},
     {"check", run_check, check_help},
     {"generate", run_generate, generate_help},
 };
@@ -35,7 +36,7 @@ const Command* find_command(const std::string& name) {
 }
 
 [[noreturn]] void unknown_command(const std::string& name) {
-  throw UsageError("unknown command '" + name + "' (expected delaunay, check, generate or help)");
+  throw UsageError("unknown command '" + name + "' (expected delaunay, voronoi, check, generate or help)");
 }
 
 // `drange help [COMMAND]`.

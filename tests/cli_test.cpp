@@ -118,7 +118,7 @@ TEST(Cli, UnknownCommand) {
   const CliRun run = run_cli(dir, {"triangulate"});
   EXPECT_EQ(run.code, 2);
   EXPECT_EQ(run.err,
-            "drange: unknown command 'triangulate' (expected delaunay, check, generate or help)\n"
+            "drange: unknown command 'triangulate' (expected delaunay, voronoi, check, generate or help)\n"
             "Try 'drange --help'.\n");
 }
 

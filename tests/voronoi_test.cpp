@@ -180,9 +180,10 @@ TEST_P(VoronoiRandom, DiagramIsConsistentWithTheTriangulation) {
 
 // A bounded cell's volume from the flag decomposition equals, in 2D, the shoelace area of
 // the region's counter-clockwise vertices (an independent formula on independent data).
-TEST_P(VoronoiRandom, TwoDimensionalRegionsAreCounterClockwiseWithTheirArea) {
+class VoronoiRandom2D : public VoronoiRandom {};
+
+TEST_P(VoronoiRandom2D, RegionsAreCounterClockwiseWithTheirArea) {
   const auto [distribution, n, d] = GetParam();
-  if (d != 2) GTEST_SKIP() << "2D only";
   const PointCloud points = generate_points(distribution, n, d, 11);
   const Voronoi v = voronoi(points);
   std::size_t bounded = 0;
@@ -206,9 +207,10 @@ TEST_P(VoronoiRandom, TwoDimensionalRegionsAreCounterClockwiseWithTheirArea) {
 
 // In 3D a ridge's vertices come in cyclic order: consecutive edges of the polygon turn the
 // same way around the axis pq.
-TEST_P(VoronoiRandom, ThreeDimensionalRidgesAreCyclic) {
+class VoronoiRandom3D : public VoronoiRandom {};
+
+TEST_P(VoronoiRandom3D, RidgesAreCyclic) {
   const auto [distribution, n, d] = GetParam();
-  if (d != 3) GTEST_SKIP() << "3D only";
   const PointCloud points = generate_points(distribution, n, d, 13);
   const Voronoi v = voronoi(points);
   std::size_t checked = 0;
@@ -237,6 +239,11 @@ TEST_P(VoronoiRandom, ThreeDimensionalRidgesAreCyclic) {
   EXPECT_GT(checked, n);
 }
 
+std::string case_name(const ::testing::TestParamInfo<RandomCase>& info) {
+  return family_name(info.param.distribution) + std::string("_") + std::to_string(info.param.n) + "_d" +
+         std::to_string(info.param.d);
+}
+
 INSTANTIATE_TEST_SUITE_P(Families, VoronoiRandom,
                          ::testing::Values(RandomCase{Distribution::Uniform, 2000, 2},
                                            RandomCase{Distribution::Clustered, 2000, 2},
@@ -244,10 +251,15 @@ INSTANTIATE_TEST_SUITE_P(Families, VoronoiRandom,
                                            RandomCase{Distribution::Gaussian, 1000, 3},
                                            RandomCase{Distribution::Uniform, 300, 4},
                                            RandomCase{Distribution::Ball, 120, 5}),
-                         [](const auto& info) {
-                           return family_name(info.param.distribution) + std::string("_") +
-                                  std::to_string(info.param.n) + "_d" + std::to_string(info.param.d);
-                         });
+                         case_name);
+INSTANTIATE_TEST_SUITE_P(Families, VoronoiRandom2D,
+                         ::testing::Values(RandomCase{Distribution::Uniform, 2000, 2},
+                                           RandomCase{Distribution::Clustered, 2000, 2}),
+                         case_name);
+INSTANTIATE_TEST_SUITE_P(Families, VoronoiRandom3D,
+                         ::testing::Values(RandomCase{Distribution::Uniform, 1000, 3},
+                                           RandomCase{Distribution::Gaussian, 1000, 3}),
+                         case_name);
 
 TEST(Voronoi, DuplicatesShareTheRegionOfTheirOriginal) {
   PointCloud points = generate_points(Distribution::Uniform, 50, 2, 3);

@@ -49,8 +49,10 @@ void compute_cell_volumes(PointsView points, const Triangulation& t, Voronoi& ou
   for (int k = 2; k <= d; ++k) factorial *= k;
 
   std::vector<double> volume(t.num_points, 0.0);
-  std::vector<double> centre(subsets * static_cast<std::size_t>(d));  // circumcentre of face `mask`
-  std::vector<double> partial(subsets);
+  // The circumcentre of face `mask`, as an offset from the simplex's first vertex, and the
+  // partial sums, in long double: the signed pieces of a far-reaching cell cancel.
+  std::vector<long double> centre(subsets * static_cast<std::size_t>(d));
+  std::vector<long double> partial(subsets);
   std::vector<const double*> corners(static_cast<std::size_t>(width)), face(static_cast<std::size_t>(width));
 
   for (std::size_t s = 0; s < t.size(); ++s) {
@@ -63,33 +65,33 @@ void compute_cell_volumes(PointsView points, const Triangulation& t, Voronoi& ou
       int n = 0;
       for (int k = 0; k < width; ++k)
         if (mask >> k & 1) face[static_cast<std::size_t>(n++)] = corners[static_cast<std::size_t>(k)];
-      face_circumcentre(d, n - 1, face.data(), centre.data() + mask * static_cast<std::size_t>(d));
+      face_circumcentre(d, n - 1, face.data(), corners[0], centre.data() + mask * static_cast<std::size_t>(d));
     }
     for (int i = 0; i < width; ++i) {
       if (on_hull[static_cast<std::size_t>(row[i])]) continue;
-      const double* p = corners[static_cast<std::size_t>(i)];
+      const long double* p = centre.data() + (std::size_t{1} << i) * static_cast<std::size_t>(d);
       std::fill(partial.begin(), partial.end(), 0.0);
       partial[std::size_t{1} << i] = 1;
       // Masks holding i, in increasing order: every subset comes before its supersets.
       for (std::size_t mask = std::size_t{1} << i; mask < subsets; ++mask) {
         if (!(mask >> i & 1) || partial[mask] == 0) continue;
-        const double* from = centre.data() + mask * static_cast<std::size_t>(d);
+        const long double* from = centre.data() + mask * static_cast<std::size_t>(d);
         for (int j = 0; j < width; ++j) {
           if (mask >> j & 1) continue;
           const std::size_t next = mask | std::size_t{1} << j;
-          const double* to = centre.data() + next * static_cast<std::size_t>(d);
-          const double* v = corners[static_cast<std::size_t>(j)];
-          double length2 = 0, toward = 0;
+          const long double* to = centre.data() + next * static_cast<std::size_t>(d);
+          const long double* v = centre.data() + (std::size_t{1} << j) * static_cast<std::size_t>(d);
+          long double length2 = 0, toward = 0;
           for (int k = 0; k < d; ++k) {
-            const double u = to[k] - from[k];
+            const long double u = to[k] - from[k];
             length2 += u * u;
             toward += u * (v[k] - p[k]);
           }
-          const double height = toward >= 0 ? std::sqrt(length2) : -std::sqrt(length2);
+          const long double height = toward >= 0 ? std::sqrt(length2) : -std::sqrt(length2);
           partial[next] += partial[mask] * height;
         }
       }
-      volume[static_cast<std::size_t>(row[i])] += partial[subsets - 1] / factorial;
+      volume[static_cast<std::size_t>(row[i])] += static_cast<double>(partial[subsets - 1] / factorial);
     }
   }
 

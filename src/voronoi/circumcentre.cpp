@@ -61,7 +61,7 @@ double simplex_circumcentre(int dim, const double* const* vertices, double* cent
   return static_cast<double>(row_norms / det);
 }
 
-void face_circumcentre(int dim, int k, const double* const* points, double* centre) {
+void face_circumcentre(int dim, int k, const double* const* points, const double* origin, long double* offset) {
   // c = p_0 + sum_j lambda_j e_j with e_j = p_j - p_0 and (e_i . e_j) lambda = |e_i|^2 / 2.
   Real e[kMaxDim * kMaxDim], gram[kMaxDim * kMaxDim], b[kMaxDim], lambda[kMaxDim];
   for (int i = 0; i < k; ++i)
@@ -76,9 +76,9 @@ void face_circumcentre(int dim, int k, const double* const* points, double* cent
   }
   if (k > 0) solve(k, gram, b, lambda);
   for (int c = 0; c < dim; ++c) {
-    Real sum = points[0][c];
+    Real sum = Real(points[0][c]) - Real(origin[c]);
     for (int j = 0; j < k; ++j) sum += lambda[j] * e[j * dim + c];
-    centre[c] = static_cast<double>(sum);
+    offset[c] = sum;
   }
 }
 

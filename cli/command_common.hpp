@@ -1,0 +1,29 @@
+// cli/command_common.hpp: what `delaunay` and `voronoi` share: where the points come from,
+// the duplicates report, and the --box argument.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "args.hpp"
+#include "drange/delaunay.hpp"
+#include "drange/voronoi.hpp"
+
+namespace drange::cli {
+
+// True when INPUT was left out but points are piped or redirected into standard input (as
+// `qdelaunay < points.txt` reads them); false for a terminal or an empty stream.
+bool standard_input_has_points();
+
+// "3 duplicate points left out (point 17 = point 4, point 20 = point 4, point 21 = point 9)".
+std::string duplicates_message(const std::vector<Duplicate>& duplicates);
+
+// Parses --box "x0,y0[,z0],x1,y1[,z1]": the lower corner, then the upper, 2*dim numbers.
+// Throws UsageError naming the value and what is wrong with it.
+Box parse_box(const std::string& text, int dim);
+
+// Throws UsageError when two output options name the same file (other than none).
+void expect_distinct_outputs(const Arguments& arguments, const std::vector<const char*>& options,
+                             const std::string& main_output);
+
+}  // namespace drange::cli

@@ -1,0 +1,136 @@
+// cli/command_voronoi.cpp: `drange voronoi`, the Voronoi diagram of a point file: by default
+// in the `qvoronoi o` layout, so that scripts written for Qhull keep working; with the
+// cells clipped to a box (2D/3D) for ParaView, and an SVG picture in 2D.
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "args.hpp"
+#include "command_common.hpp"
+#include "commands.hpp"
+#include "drange/errors.hpp"
+#include "drange/formats.hpp"
+#include "drange/io.hpp"
+#include "drange/svg.hpp"
+#include "drange/voronoi.hpp"
+#include "exit_codes.hpp"
+#include "progress.hpp"
+
+namespace drange::cli {
+namespace {
+
+const std::vector<OptionSpec> kOptions = {
+    {"output", 'o', true}, {"format", 0, true},    {"ridges", 0, true}, {"cells", 0, true},
+    {"box", 0, true},      {"svg", 0, true},       {"circles", 0, false}, {"no-volumes", 0, false},
+    {"stats", 0, false},   {"variant", 0, true},   {"quiet", 'q', false},
+};
+
+bool needs_cells(OutputFormat format) { return format == OutputFormat::Vtu || format == OutputFormat::Off; }
+
+int diagram_of_file(const std::string& input, const Arguments& arguments) {
+  const std::string output = arguments.value_or("output", "-");
+  expect_distinct_outputs(arguments, {"ridges", "cells", "svg"}, output);
+  const OutputFormat format = arguments.has("format") ? output_format_from_name(arguments.value_or("format", ""))
+                                                      : output_format_from_path(output, OutputFormat::Qhull);
+  const std::string cells_path = arguments.value_or("cells", "");
+  const OutputFormat cells_format = output_format_from_path(cells_path, OutputFormat::Vtu);
+  if (arguments.has("cells") && cells_format == OutputFormat::Qhull)
+    throw UsageError("--cells: Qhull's layouts hold no clipped cells; name a .vtu, .off, .json or .npz file");
+  const bool quiet = arguments.has("quiet");
+
+  const PointCloud points = read_points(input);
+  Options options;
+  options.search = search_variant(arguments.value_or("variant", "full"));
+  options.progress = make_progress_reporter(points.size(), points.dim, quiet);
+  const Triangulation triangulation = delaunay(points, options);
+  if (!triangulation.duplicates.empty() && !quiet)
+    std::cerr << "drange: " << duplicates_message(triangulation.duplicates) << '\n';
+  const Voronoi diagram = voronoi(points, triangulation, !arguments.has("no-volumes"));
+
+  // Clipped cells when asked for (--cells, --box, or an output format that draws them).
+  const bool want_cells = arguments.has("cells") || arguments.has("box") || needs_cells(format);
+  ClippedCells cells;
+  if (want_cells) {
+    const Box box = arguments.has("box") ? parse_box(arguments.value_or("box", ""), points.dim) : default_clip_box(points);
+    cells = clip_cells(points, diagram, box);
+  }
+  const ClippedCells* clipped = want_cells ? &cells : nullptr;
+
+  write_voronoi(output, format, points, diagram, clipped);
+  if (arguments.has("ridges"))
+    write_file_atomically(arguments.value_or("ridges", ""), [&](std::ostream& out) { write_qvoronoi_fv(out, diagram); });
+  if (arguments.has("cells")) write_voronoi(cells_path, cells_format, points, diagram, clipped);
+  if (arguments.has("svg")) {
+    SvgOptions svg;
+    svg.circumcircles = arguments.has("circles");
+    write_file_atomically(arguments.value_or("svg", ""),
+                          [&](std::ostream& out) { write_svg(out, points, triangulation, &diagram, svg); });
+  }
+  if (arguments.has("stats"))
+    std::cerr << triangulation.stats.summary() << " voronoi_vertices=" << diagram.num_vertices()
+              << " ridges=" << diagram.num_ridges() << '\n';
+  return kExitSuccess;
+}
+
+}  // namespace
+
+std::string voronoi_help() {
+  return std::string(
+             "Usage: drange voronoi [INPUT] [OPTIONS]\n"
+             "\n"
+             "Computes the Voronoi diagram of the points in INPUT (a file, or - for standard input;\n"
+             "without INPUT, points piped or redirected into standard input) from their Delaunay\n"
+             "triangulation, and writes it.\n"
+             "\n"
+             "Options:\n"
+             "  -o, --output FILE     where to write the diagram (default -, standard output)\n"
+             "      --format NAME     the output format: ") +
+         output_format_names() +
+         "\n"
+         "                        (default: from FILE's extension .json .npz .vtu .off,\n"
+         "                        otherwise qhull, the `qvoronoi o` layout)\n"
+         "      --ridges FILE     also write the ridges in the `qvoronoi Fv` layout\n"
+         "      --cells FILE      also write the cells clipped to the box (2D/3D), as .vtu (the\n"
+         "                        default), .off, .json or .npz, with each cell's area/volume\n"
+         "      --box LIST        the clipping box: x0,y0[,z0],x1,y1[,z1] (default: the points'\n"
+         "                        bounding box enlarged by 10% of its size on every side)\n"
+         "      --svg FILE        also draw the points, triangulation and diagram (2D) as SVG\n"
+         "      --circles         draw the circumcircles too (with --svg)\n"
+         "      --no-volumes      skip the volumes of the bounded cells (costly for d >= 6)\n"
+         "      --stats           print the run's statistics (key=value) to standard error\n"
+         "      --variant NAME    the Delaunay search variant (see drange delaunay --help)\n"
+         "  -q, --quiet           no progress line, no report of duplicate points\n"
+         "  -h, --help            show this text\n"
+         "\n"
+         "The diagram uses scipy.spatial.Voronoi's names and meaning: vertices (the circumcentres\n"
+         "of the Delaunay simplices), ridge_points (pairs of points whose cells share a face of\n"
+         "dimension d-1), ridge_vertices, regions and point_region, with -1 for the point at\n"
+         "infinity, plus volumes (the volume of each bounded cell, any d). Simplices with the\n"
+         "same circumsphere (cospherical points, as in every integer grid) share one vertex:\n"
+         "that is decided exactly, never with a tolerance, so a grid cell is a square or cube.\n"
+         "In 2D each region lists its vertices counter-clockwise; in 3D each ridge lists its\n"
+         "polygon in cyclic order. Duplicate points share the region of their original.\n"
+         "\n"
+         "Output: qhull is the `qvoronoi o` layout (dimension; vertex count + 1, region count, 1;\n"
+         "the point at infinity; the vertices; then for each input point its region: the count\n"
+         "and the vertex numbers, 0 meaning infinity). json holds scipy's names; npz is NumPy's\n"
+         "archive of the same arrays; vtu (ParaView) and off draw the clipped cells.\n"
+         "\n"
+         "Examples:\n"
+         "  drange generate uniform 1000 2 -o points.txt\n"
+         "  drange voronoi points.txt -o diagram.json --svg diagram.svg\n"
+         "  drange voronoi points.txt --cells cells.vtu --box 0,0,1,1\n"
+         "  rbox 100 D3 | drange voronoi > diagram.txt\n"
+         "\n" +
+         exit_codes_help();
+}
+
+int run_voronoi(const std::vector<std::string>& args) {
+  const Arguments arguments = parse_arguments(args, kOptions);
+  expect_positionals(arguments, {"INPUT"}, 0);
+  if (!arguments.positionals.empty()) return diagram_of_file(arguments.positionals[0], arguments);
+  if (standard_input_has_points()) return diagram_of_file("-", arguments);
+  throw UsageError("missing argument INPUT (a point file, or points on standard input)");
+}
+
+}  // namespace drange::cli
