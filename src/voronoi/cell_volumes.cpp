@@ -14,6 +14,10 @@
 //
 // Per simplex: the circumcentres of all its 2^(d+1) faces, then for each interior vertex a
 // sum over the subsets of the other vertices (2^d partial sums), not over the d! orders.
+//
+// In 2D and 3D the ridges are known polygons (segments; cyclic polygons), so the cell is
+// the union of the pyramids from p over its ridges: vol = (1/d) sum |pq|/2 * area(ridge),
+// positive terms only, and much cheaper.
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -37,9 +41,59 @@ std::vector<char> hull_points(const Triangulation& t) {
   return on_hull;
 }
 
+// The (d-1)-measure of a bounded ridge: a segment's length (2D) or a planar polygon's area
+// (3D; its vertices in cyclic order).
+double ridge_measure(const Voronoi& v, std::size_t r) {
+  const std::int32_t* ids = v.ridge_vertices.row(r);
+  const std::size_t n = v.ridge_vertices.row_size(r);
+  const double* o = v.vertex(static_cast<std::size_t>(ids[0]));
+  if (v.dim == 2) {
+    const double* a = v.vertex(static_cast<std::size_t>(ids[n - 1]));
+    return std::hypot(a[0] - o[0], a[1] - o[1]);
+  }
+  long double normal[3] = {0, 0, 0};
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double* a = v.vertex(static_cast<std::size_t>(ids[i]));
+    const double* b = v.vertex(static_cast<std::size_t>(ids[i + 1]));
+    const long double u[3] = {(long double)a[0] - o[0], (long double)a[1] - o[1], (long double)a[2] - o[2]};
+    const long double w[3] = {(long double)b[0] - o[0], (long double)b[1] - o[1], (long double)b[2] - o[2]};
+    normal[0] += u[1] * w[2] - u[2] * w[1];
+    normal[1] += u[2] * w[0] - u[0] * w[2];
+    normal[2] += u[0] * w[1] - u[1] * w[0];
+  }
+  return static_cast<double>(std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]) / 2);
+}
+
+// 2D and 3D: pyramids from each point over its ridges.
+std::vector<double> volumes_from_ridges(PointsView points, const Voronoi& v) {
+  std::vector<double> volume(points.n, 0.0);
+  for (std::size_t r = 0; r < v.num_ridges(); ++r) {
+    const std::int32_t* ids = v.ridge_vertices.row(r);
+    if (ids[0] < 0) continue;  // unbounded: both cells are unbounded
+    const auto p = static_cast<std::size_t>(v.ridge_points[2 * r]);
+    const auto q = static_cast<std::size_t>(v.ridge_points[2 * r + 1]);
+    double distance2 = 0;
+    for (int k = 0; k < v.dim; ++k) distance2 += (points.point(q)[k] - points.point(p)[k]) * (points.point(q)[k] - points.point(p)[k]);
+    const double pyramid = std::sqrt(distance2) / 2 * ridge_measure(v, r) / v.dim;
+    volume[p] += pyramid;
+    volume[q] += pyramid;
+  }
+  return volume;
+}
+
 }  // namespace
 
 void compute_cell_volumes(PointsView points, const Triangulation& t, Voronoi& out) {
+  if (t.dim <= 3) {
+    const std::vector<char> on_hull = hull_points(t);
+    const std::vector<double> volume = volumes_from_ridges(points, out);
+    out.volumes.resize(out.region_point.size());
+    for (std::size_t r = 0; r < out.region_point.size(); ++r) {
+      const auto p = static_cast<std::size_t>(out.region_point[r]);
+      out.volumes[r] = on_hull[p] ? std::numeric_limits<double>::infinity() : volume[p];
+    }
+    return;
+  }
   const int d = t.dim;
   const int width = d + 1;
   const std::size_t subsets = std::size_t{1} << width;

@@ -51,21 +51,18 @@ void append_region(const Triangulation& t, const VertexClasses& classes, const I
 }  // namespace
 
 void build_regions(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence, Voronoi& out) {
-  // A duplicate has no simplex; it takes the region of the point it copies, which comes
-  // earlier in the input.
-  std::vector<std::int32_t> original(t.num_points, -1);
-  for (const Duplicate& dup : t.duplicates) original[static_cast<std::size_t>(dup.index)] = static_cast<std::int32_t>(dup.original);
+  // Regions are numbered in the order the points are visited (incidence.order, for cache
+  // locality); point_region maps each input point to its own.
   out.point_region.assign(t.num_points, -1);
-  for (std::size_t p = 0; p < t.num_points; ++p) {
-    if (original[p] >= 0) {
-      out.point_region[p] = out.point_region[static_cast<std::size_t>(original[p])];
-      continue;
-    }
-    out.point_region[p] = static_cast<std::int32_t>(out.regions.size());
-    out.region_point.push_back(static_cast<std::int32_t>(p));
-    append_region(t, classes, incidence, static_cast<std::int32_t>(p), out.regions);
+  for (const std::int32_t p : incidence.order) {
+    out.point_region[static_cast<std::size_t>(p)] = static_cast<std::int32_t>(out.regions.size());
+    out.region_point.push_back(p);
+    append_region(t, classes, incidence, p, out.regions);
     out.regions.end_row();
   }
+  // A duplicate has no simplex; it shares the region of the point it copies.
+  for (const Duplicate& dup : t.duplicates)
+    out.point_region[static_cast<std::size_t>(dup.index)] = out.point_region[static_cast<std::size_t>(dup.original)];
 }
 
 }  // namespace drange::diagram

@@ -104,8 +104,8 @@ void build_ridges(const Triangulation& t, const VertexClasses& classes, const In
   const RidgeBuilder builder(t, classes);
   const int width = t.dim + 1;
   std::vector<Sharing> around;
-  for (std::size_t p = 0; p < t.num_points; ++p) {
-    const auto pp = static_cast<std::int32_t>(p);
+  for (const std::int32_t pp : incidence.order) {
+    const auto p = static_cast<std::size_t>(pp);
     around.clear();
     for (const std::int32_t* it = incidence.begin(p); it != incidence.end(p); ++it) {
       const std::int32_t s = *it;

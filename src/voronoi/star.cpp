@@ -13,8 +13,12 @@ Incidence point_incidence(const Triangulation& t) {
   out.simplices.resize(t.simplices.size());
   std::vector<std::int64_t> next(out.offsets.begin(), out.offsets.end() - 1);
   const std::size_t width = static_cast<std::size_t>(t.dim + 1);
-  for (std::size_t i = 0; i < t.simplices.size(); ++i)
-    out.simplices[static_cast<std::size_t>(next[static_cast<std::size_t>(t.simplices[i])]++)] = static_cast<std::int32_t>(i / width);
+  out.order.reserve(t.num_points);
+  for (std::size_t i = 0; i < t.simplices.size(); ++i) {
+    const auto v = static_cast<std::size_t>(t.simplices[i]);
+    if (next[v] == out.offsets[v]) out.order.push_back(static_cast<std::int32_t>(v));
+    out.simplices[static_cast<std::size_t>(next[v]++)] = static_cast<std::int32_t>(i / width);
+  }
   return out;
 }
 

@@ -12,9 +12,13 @@
 namespace drange::diagram {
 
 // simplices[offsets[p] .. offsets[p+1]) are the simplices having input point p as a vertex.
+// `order` lists the points that have simplices in the order of their first simplex: the
+// engine emits simplices in a spatially coherent order, so visiting points in this order
+// keeps the simplices and neighbours being read in cache (input order would jump at random).
 struct Incidence {
   std::vector<std::int64_t> offsets;
   std::vector<std::int32_t> simplices;
+  std::vector<std::int32_t> order;
 
   const std::int32_t* begin(std::size_t p) const { return simplices.data() + offsets[p]; }
   const std::int32_t* end(std::size_t p) const { return simplices.data() + offsets[p + 1]; }

@@ -29,9 +29,9 @@ Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell
   const diagram::Incidence incidence = diagram::point_incidence(t);
   diagram::build_ridges(t, classes, incidence, out);
   diagram::build_regions(t, classes, incidence, out);
-  if (cell_volumes) diagram::compute_cell_volumes(points, t, out);
   out.simplex_vertex = std::move(classes.of_simplex);
   out.vertices = std::move(classes.vertices);
+  if (cell_volumes) diagram::compute_cell_volumes(points, t, out);  // uses the vertices in 2D/3D
   return out;
 }
 
