@@ -61,25 +61,4 @@ double simplex_circumcentre(int dim, const double* const* vertices, double* cent
   return static_cast<double>(row_norms / det);
 }
 
-void face_circumcentre(int dim, int k, const double* const* points, const double* origin, long double* offset) {
-  // c = p_0 + sum_j lambda_j e_j with e_j = p_j - p_0 and (e_i . e_j) lambda = |e_i|^2 / 2.
-  Real e[kMaxDim * kMaxDim], gram[kMaxDim * kMaxDim], b[kMaxDim], lambda[kMaxDim];
-  for (int i = 0; i < k; ++i)
-    for (int c = 0; c < dim; ++c) e[i * dim + c] = Real(points[i + 1][c]) - Real(points[0][c]);
-  for (int i = 0; i < k; ++i) {
-    for (int j = 0; j <= i; ++j) {
-      Real dot = 0;
-      for (int c = 0; c < dim; ++c) dot += e[i * dim + c] * e[j * dim + c];
-      gram[i * k + j] = gram[j * k + i] = dot;
-    }
-    b[i] = gram[i * k + i] / 2;
-  }
-  if (k > 0) solve(k, gram, b, lambda);
-  for (int c = 0; c < dim; ++c) {
-    Real sum = Real(points[0][c]) - Real(origin[c]);
-    for (int j = 0; j < k; ++j) sum += lambda[j] * e[j * dim + c];
-    offset[c] = sum;
-  }
-}
-
 }  // namespace drange::diagram

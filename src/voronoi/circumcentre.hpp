@@ -17,9 +17,4 @@ inline constexpr int kMaxDim = 11;
 // Returns +infinity for a flat simplex (then `centre` is not set).
 double simplex_circumcentre(int dim, const double* const* vertices, double* centre);
 
-// The centre of the smallest sphere through k+1 affinely independent points of E^dim
-// (k <= dim): the point of their affine hull equidistant from all of them, written as its
-// offset from `origin` in long double (no digits lost to a far origin or a far centre).
-void face_circumcentre(int dim, int k, const double* const* points, const double* origin, long double* offset);
-
 }  // namespace drange::diagram
