@@ -67,6 +67,11 @@ Box parse_box(const std::string& text, int dim) {
   return box;
 }
 
+void expect_svg_dimension(const Arguments& arguments, int dim) {
+  if (arguments.has("svg") && dim != 2)
+    throw UsageError("SVG pictures are 2D only, the points have dimension " + std::to_string(dim));
+}
+
 void expect_distinct_outputs(const Arguments& arguments, const std::vector<const char*>& options,
                              const std::string& main_output) {
   std::vector<std::pair<std::string, std::string>> seen{{"--output", main_output}};

@@ -22,6 +22,10 @@ std::string duplicates_message(const std::vector<Duplicate>& duplicates);
 // Throws UsageError naming the value and what is wrong with it.
 Box parse_box(const std::string& text, int dim);
 
+// With --svg, throws write_svg's UsageError for points that are not 2D, before any work is
+// done or any file written: a run that cannot draw its picture writes nothing.
+void expect_svg_dimension(const Arguments& arguments, int dim);
+
 // Throws UsageError when two output options name the same file (other than none).
 void expect_distinct_outputs(const Arguments& arguments, const std::vector<const char*>& options,
                              const std::string& main_output);

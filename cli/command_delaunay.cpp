@@ -34,6 +34,7 @@ int triangulate_file(const std::string& input, const Arguments& arguments) {
   options.compute_neighbors = arguments.has("neighbors") || format != OutputFormat::Qhull;
 
   const PointCloud points = read_points(input);
+  expect_svg_dimension(arguments, points.dim);
   options.progress = make_progress_reporter(points.size(), points.dim, quiet);
   const Triangulation triangulation = delaunay(points, options);
 

@@ -33,12 +33,18 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
   const OutputFormat format = arguments.has("format") ? output_format_from_name(arguments.value_or("format", ""))
                                                       : output_format_from_path(output, OutputFormat::Qhull);
   const std::string cells_path = arguments.value_or("cells", "");
-  const OutputFormat cells_format = output_format_from_path(cells_path, OutputFormat::Vtu);
+  // A cell format by the extension; VTU on standard output. Qhull's layouts have no cells.
+  const OutputFormat cells_format =
+      cells_path == "-" ? OutputFormat::Vtu : output_format_from_path(cells_path, OutputFormat::Qhull);
   if (arguments.has("cells") && cells_format == OutputFormat::Qhull)
     throw UsageError("--cells: Qhull's layouts hold no clipped cells; name a .vtu, .off, .json or .npz file");
+  if (arguments.has("box") && !arguments.has("cells") && format == OutputFormat::Qhull)
+    throw UsageError("--box clips the cells, which Qhull's layout does not hold: add --cells FILE, or choose "
+                     "--format json, npz, vtu or off");
   const bool quiet = arguments.has("quiet");
 
   const PointCloud points = read_points(input);
+  expect_svg_dimension(arguments, points.dim);
   Options options;
   options.search = search_variant(arguments.value_or("variant", "full"));
   options.progress = make_progress_reporter(points.size(), points.dim, quiet);
@@ -90,10 +96,12 @@ std::string voronoi_help() {
          "                        (default: from FILE's extension .json .npz .vtu .off,\n"
          "                        otherwise qhull, the `qvoronoi o` layout)\n"
          "      --ridges FILE     also write the ridges in the `qvoronoi Fv` layout\n"
-         "      --cells FILE      also write the cells clipped to the box (2D/3D), as .vtu (the\n"
-         "                        default), .off, .json or .npz, with each cell's area/volume\n"
+         "      --cells FILE      also write the cells clipped to the box (2D/3D), as .vtu, .off,\n"
+         "                        .json or .npz (by FILE's extension; - is VTU on standard\n"
+         "                        output), with each cell's area/volume\n"
          "      --box LIST        the clipping box: x0,y0[,z0],x1,y1[,z1] (default: the points'\n"
-         "                        bounding box enlarged by 10% of its size on every side)\n"
+         "                        bounding box enlarged by 10% of its size on every side);\n"
+         "                        for --cells, or the cells in json, npz, vtu and off output\n"
          "      --svg FILE        also draw the points, triangulation and diagram (2D) as SVG\n"
          "      --circles         draw the circumcircles too (with --svg)\n"
          "      --no-volumes      skip the volumes of the bounded cells (costly for d >= 6)\n"

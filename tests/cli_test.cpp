@@ -1,10 +1,6 @@
 // tests/cli_test.cpp: the `drange` command run as a user runs it (through the shell, with
 // files and redirections): outputs, messages, and the documented exit code of each outcome.
-#include <sys/wait.h>
-
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -12,58 +8,22 @@
 
 #include <gtest/gtest.h>
 
+#include "cli_runner.hpp"
 #include "drange/generate.hpp"
 #include "drange/io.hpp"
 #include "temp_dir.hpp"
 
-#ifndef DRANGE_CLI_PATH
-#error "DRANGE_CLI_PATH must name the built drange executable"
-#endif
-
 namespace drange {
 namespace {
 
+using testing::CliRun;
+using testing::contains;
 using testing::count_entries;
+using testing::kSquareWithCentre;
 using testing::read_text;
+using testing::run_cli;
 using testing::TempDir;
 using testing::write_text;
-
-struct CliRun {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string shell_quote(const std::string& word) {
-  std::string quoted = "'";
-  for (char c : word) {
-    if (c == '\'') quoted += "'\\''";
-    else quoted += c;
-  }
-  return quoted + "'";
-}
-
-// Runs `drange ARGS` in the shell; standard input comes from `stdin_path` (or /dev/null).
-CliRun run_cli(const TempDir& dir, const std::vector<std::string>& args, const std::string& stdin_path = "/dev/null") {
-  std::string command = shell_quote(DRANGE_CLI_PATH);
-  for (const std::string& arg : args) command += " " + shell_quote(arg);
-  const std::string out_path = dir.file(".stdout");
-  const std::string err_path = dir.file(".stderr");
-  command += " < " + shell_quote(stdin_path) + " > " + shell_quote(out_path) + " 2> " + shell_quote(err_path);
-  const int status = std::system(command.c_str());
-  CliRun run;
-  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = read_text(out_path);
-  run.err = read_text(err_path);
-  std::remove(out_path.c_str());
-  std::remove(err_path.c_str());
-  return run;
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-// The four corners of the unit square and its centre: four triangles, all around the centre.
-const char* kSquareWithCentre = "2\n5\n0 0\n1 0\n1 1\n0 1\n0.5 0.5\n";
 
 // ---------------------------------------------------------------- help, version, usage errors
 

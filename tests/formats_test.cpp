@@ -429,7 +429,7 @@ TEST(FormatsVtu, ThrowsBeyond3D) {
     write_delaunay_vtu(out, points, t);
     FAIL() << "no error";
   } catch (const UsageError& e) {
-    EXPECT_EQ(std::string(e.what()), "write_delaunay_vtu: VTK holds 2D and 3D only, not 4D");
+    EXPECT_EQ(std::string(e.what()), "VTK holds 2D and 3D only; the points have dimension 4");
   }
 }
 

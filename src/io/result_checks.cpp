@@ -115,14 +115,15 @@ void check_cells_of(const Voronoi& diagram, const ClippedCells& cells, const cha
   }
 }
 
-void check_2d_or_3d(int dim, const char* format, const char* writer) {
+// A user's choice rather than a programming error, so the message names no function.
+void check_2d_or_3d(int dim, const char* format) {
   if (dim != 2 && dim != 3)
-    fail(writer, std::string(format) + " holds 2D and 3D only, not " + std::to_string(dim) + "D");
+    throw UsageError(std::string(format) + " holds 2D and 3D only; the points have dimension " + std::to_string(dim));
 }
 
 void check_drawable(PointsView points, const Triangulation& triangulation, const char* format, const char* writer) {
   check_triangulation(triangulation, writer);
-  check_2d_or_3d(triangulation.dim, format, writer);
+  check_2d_or_3d(triangulation.dim, format);
   check_same_input(points, triangulation.dim, triangulation.num_points, writer);
 }
 

@@ -29,8 +29,8 @@ void check_cells(const ClippedCells& cells, const char* writer);
 // check_cells, and the cells are those of the diagram: one per region, same dimension.
 void check_cells_of(const Voronoi& diagram, const ClippedCells& cells, const char* writer);
 
-// The dimension is 2 or 3: "<writer>: <format> holds 2D and 3D only, not <d>D".
-void check_2d_or_3d(int dim, const char* format, const char* writer);
+// The dimension is 2 or 3, else UsageError "<format> holds 2D and 3D only; the points have dimension <d>".
+void check_2d_or_3d(int dim, const char* format);
 
 // For the writers that draw a triangulation (VTK, OFF): check_triangulation, a dimension
 // of 2 or 3, and `points` its input.

@@ -110,7 +110,7 @@ void write_delaunay_off(std::ostream& stream, PointsView points, const Triangula
 void write_cells_off(std::ostream& stream, const ClippedCells& cells) {
   constexpr const char* kWriter = "write_cells_off";
   io::check_cells(cells, kWriter);
-  io::check_2d_or_3d(cells.dim, "OFF", kWriter);
+  io::check_2d_or_3d(cells.dim, "OFF");
   const std::size_t corners = cells.points.size() / static_cast<std::size_t>(cells.dim);
   OutputBuffer out(stream);
   put_header(out, corners, cells.faces.size());

@@ -165,7 +165,7 @@ void write_cells_vtu(std::ostream& stream, const Voronoi& diagram, const Clipped
   constexpr const char* kWriter = "write_cells_vtu";
   io::check_voronoi(diagram, kWriter);
   io::check_cells_of(diagram, cells, kWriter);
-  io::check_2d_or_3d(cells.dim, "VTK", kWriter);
+  io::check_2d_or_3d(cells.dim, "VTK");
 
   // Empty cells (outside the box) have no VTK representation; the "point" array keeps
   // telling which input point each written cell belongs to.
