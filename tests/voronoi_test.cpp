@@ -107,6 +107,23 @@ TEST(Voronoi, CocircularPointsShareOneVertex) {
   for (std::size_t r = 0; r < v.regions.size(); ++r) EXPECT_EQ(row_of(v.regions, r), (std::vector<std::int32_t>{-1, 0}));
 }
 
+// Nearly coplanar points (0.1 + 0.2 != 0.3 in doubles) give Delaunay slivers whose
+// circumcentre a long double solve gets only to about 1e-4 (3D) or 1e-3 relative; these
+// centres are solved exactly and rounded once (values: the exact centres, rounded).
+TEST(Voronoi, SliverCentresAreCorrectlyRounded) {
+  const PointCloud tetrahedron{3, {0.1, -0.2, 0.2, 0.1, -0.2, -0.2, 0.2, -0.1, 0.2, 0.30000000000000004, 0.0, 0.0}};
+  const Voronoi v3 = voronoi(tetrahedron);
+  ASSERT_EQ(v3.num_vertices(), 1u);
+  EXPECT_EQ(v3.vertex(0)[0], 0.30000000000000004);
+  EXPECT_EQ(v3.vertex(0)[1], -0.30000000000000004);
+  EXPECT_EQ(v3.vertex(0)[2], 0.0);
+  const PointCloud triangle{2, {0.1, 0.2, 0.2, 0.1, 0.30000000000000004, 0.0}};
+  const Voronoi v2 = voronoi(triangle);
+  ASSERT_EQ(v2.num_vertices(), 1u);
+  EXPECT_EQ(v2.vertex(0)[0], 720575940379279.8);
+  EXPECT_EQ(v2.vertex(0)[1], 720575940379279.8);
+}
+
 TEST(Voronoi, CircleWithCentreGivesABoundedCell) {
   PointCloud points = integer_circle();
   points.coords.insert(points.coords.end(), {0.0, 0.0});
