@@ -413,6 +413,46 @@ TEST(ClipCells, DuplicatesShareTheirOriginalsCell) {
   expect_valid(points, diagram, cells, "duplicates");
 }
 
+// Regression (review): corners a rounding apart in the cell's own frame became one double
+// far from the origin and were listed two or three times. Every corner of a cell is now
+// distinct, and every face loop has at least 3 corners and no zero-length edge.
+void expect_distinct_corners(const PointCloud& points) {
+  const Voronoi diagram = voronoi(points);
+  const ClippedCells cells = clip_cells(points, diagram, default_clip_box(points));
+  const auto d = static_cast<std::size_t>(points.dim);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    std::set<std::vector<double>> corners;
+    std::set<std::int32_t> used;
+    for (auto f = static_cast<std::size_t>(cells.cell_faces[c]); f < static_cast<std::size_t>(cells.cell_faces[c + 1]); ++f) {
+      const std::size_t n = cells.faces.row_size(f);
+      EXPECT_GE(n, 3u) << "cell " << c << " face " << f;
+      for (std::size_t i = 0; i < n; ++i) {
+        EXPECT_NE(cells.faces.row(f)[i], cells.faces.row(f)[(i + 1) % n]) << "cell " << c << " face " << f;
+        used.insert(cells.faces.row(f)[i]);
+      }
+    }
+    for (const std::int32_t v : used)
+      corners.insert(std::vector<double>(cells.points.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(v) * d),
+                                         cells.points.begin() + static_cast<std::ptrdiff_t>((static_cast<std::size_t>(v) + 1) * d)));
+    EXPECT_EQ(corners.size(), used.size()) << "cell " << c << " lists a corner twice";
+  }
+}
+
+TEST(ClipCells, FarCellsListEveryCornerOnce) {
+  // A floating-point regular pentagon around (1e6, 1e6): its five vertices are cocircular up
+  // to rounding, so the Voronoi vertices lie 1e-10 apart.
+  expect_distinct_corners(PointCloud{2, {1000003.0, 1000000.0, 1000000.9270509831, 1000002.8531695489,
+                                         999997.5729490169, 1000001.7633557569, 999997.5729490169,
+                                         999998.2366442431, 1000000.9270509831, 999997.1468304511}});
+  // The same in 3D: points of a sphere of radius 4.5 around (1e6 + 1.5, ...), rounded.
+  PointCloud sphere{3, {}};
+  for (int i = 0; i < 40; ++i) {
+    const double z = -1 + (2.0 * i + 1) / 40, r = std::sqrt(1 - z * z), a = 2.399963229728653 * i;
+    sphere.coords.insert(sphere.coords.end(), {1e6 + 4.5 * r * std::cos(a), 1e6 + 4.5 * r * std::sin(a), 1e6 + 4.5 * z});
+  }
+  expect_distinct_corners(sphere);
+}
+
 TEST(ClipCells, RefusesBadArguments) {
   const PointCloud points = drange::generate_points(Distribution::Uniform, 20, 2, 1);
   const Voronoi diagram = all_pairs_diagram(points);

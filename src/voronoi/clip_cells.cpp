@@ -99,11 +99,33 @@ void append_cell(const Shape& shape, const double* p, ClippedCells& out) {
   const std::size_t first = out.points.size() / d;
   if (first + shape.num_corners() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
     throw UsageError("clip_cells: more than 2^31 corners in all the clipped cells");
-  for (std::size_t v = 0; v < shape.num_corners(); ++v)
-    for (std::size_t k = 0; k < d; ++k) out.points.push_back(p[k] + shape.corner(v)[k]);
+  // Back to absolute coordinates. Corners a rounding apart relative to p can become the same
+  // double once p is added (a cell far from the origin): they are merged into one, and a face
+  // edge or a whole face that this collapses is dropped.
+  std::vector<std::int32_t> index(shape.num_corners());
+  std::size_t added = 0;
+  for (std::size_t v = 0; v < shape.num_corners(); ++v) {
+    double corner[3];
+    for (std::size_t k = 0; k < d; ++k) corner[k] = p[k] + shape.corner(v)[k];
+    std::size_t same = 0;
+    while (same < added && !std::equal(corner, corner + d, out.points.begin() + static_cast<std::ptrdiff_t>((first + same) * d))) ++same;
+    if (same == added) {
+      out.points.insert(out.points.end(), corner, corner + d);
+      ++added;
+    }
+    index[v] = static_cast<std::int32_t>(first + same);
+  }
   for (std::size_t f = 0; f < shape.num_faces(); ++f) {
-    for (std::size_t i = 0; i < shape.face_size(f); ++i)
-      out.faces.values.push_back(static_cast<std::int32_t>(first) + shape.face_corner(f, i));
+    const std::size_t start = out.faces.values.size();
+    for (std::size_t i = 0; i < shape.face_size(f); ++i) {
+      const std::int32_t c = index[static_cast<std::size_t>(shape.face_corner(f, i))];
+      if (out.faces.values.size() == start || out.faces.values.back() != c) out.faces.values.push_back(c);
+    }
+    if (out.faces.values.size() - start > 1 && out.faces.values.back() == out.faces.values[start]) out.faces.values.pop_back();
+    if (out.faces.values.size() - start < 3) {
+      out.faces.values.resize(start);
+      continue;
+    }
     out.faces.end_row();
   }
   out.cell_faces.push_back(static_cast<std::int64_t>(out.faces.size()));
