@@ -35,13 +35,16 @@ std::string general_help() {
              "  -h, --help       show help (also after a command: drange delaunay --help)\n"
              "      --version    print the version\n"
              "\n"
-             "Formats (text; blank lines and lines starting with '#' are ignored):\n"
+             "Formats (text: blank lines and lines starting with '#' are ignored):\n"
              "  points     Qhull's input format: the dimension, the number of points, then one point\n"
              "             per line (what rbox and `drange generate` write); or one point per line,\n"
              "             coordinates separated by spaces or commas (CSV), with an optional header\n"
-             "             row of column names.\n"
+             "             row of column names; or a NumPy .npy array (n x d, float64 or float32).\n"
              "  simplices  `qdelaunay i` output: the number of simplices, then one line per simplex\n"
              "             of d+1 zero-based point indices.\n"
+             "  results    delaunay and voronoi also write json (scipy's names), npz (numpy.load),\n"
+             "             vtu (ParaView) and off, by --format or the output's extension, and SVG\n"
+             "             pictures of 2D results with --svg.\n"
              "\n") +
          exit_codes_help() + "\nRun 'drange help COMMAND' for the options of a command.\n";
 }
