@@ -17,7 +17,7 @@ bool on_hull(const Triangulation& t, const VertexClasses& classes, const Inciden
   for (const std::int32_t* it = incidence.begin(static_cast<std::size_t>(p)); it != incidence.end(static_cast<std::size_t>(p)); ++it) {
     const std::int32_t* row = t.simplex(static_cast<std::size_t>(*it));
     for (int k = 0; k < width; ++k)
-      if (row[k] != p && classes.of_hull_facet[static_cast<std::size_t>(*it) * static_cast<std::size_t>(width) + static_cast<std::size_t>(k)] >= 0)
+      if (row[k] != p && classes.hull_class(t, static_cast<std::size_t>(*it), k) >= 0)
         return true;
   }
   return false;

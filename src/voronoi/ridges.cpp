@@ -115,7 +115,7 @@ void build_ridges(const Triangulation& t, const VertexClasses& classes, const In
         if (row[j] > pp) around.push_back({row[j], cls, s});
       // Hull facets of s holding p: the cells at infinity around the edges of p in them.
       for (int k = 0; k < width; ++k) {
-        const std::int32_t hull_cls = classes.of_hull_facet[static_cast<std::size_t>(s) * static_cast<std::size_t>(width) + static_cast<std::size_t>(k)];
+        const std::int32_t hull_cls = classes.hull_class(t, static_cast<std::size_t>(s), k);
         if (hull_cls < 0 || row[k] == pp) continue;
         for (int j = 0; j < width; ++j)
           if (j != k && row[j] > pp) around.push_back({row[j], hull_cls, s});

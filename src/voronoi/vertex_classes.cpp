@@ -156,9 +156,11 @@ VertexClasses classify_vertices(PointsView points, const Triangulation& t) {
   if (m == 0) out.finite = 0;
   out.total = static_cast<std::int32_t>(size.size());
   out.of_simplex.assign(id.begin(), id.begin() + static_cast<std::ptrdiff_t>(m));
-  out.of_hull_facet.assign(m * width, -1);
-  for (std::size_t h = 0; h < hull.size(); ++h)
-    out.of_hull_facet[static_cast<std::size_t>(hull[h].simplex) * width + static_cast<std::size_t>(hull[h].face)] = id[m + h];
+  // `hull` was collected in increasing (simplex, face) order, so its keys come sorted.
+  for (std::size_t h = 0; h < hull.size(); ++h) {
+    out.hull_facet_keys.push_back(static_cast<std::int64_t>(static_cast<std::size_t>(hull[h].simplex) * width + static_cast<std::size_t>(hull[h].face)));
+    out.hull_facet_class.push_back(id[m + h]);
+  }
 
   // Each Voronoi vertex is the centre of its class's best-conditioned simplex. The copy is in
   // place: class c's members all have indices >= c, and slots below c are the only ones
