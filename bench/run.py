@@ -1,0 +1,285 @@
+#!/usr/bin/env python3
+"""bench/run.py: runs the benchmark set, one process per (input, peer), and writes Markdown.
+
+Called by bench/run.sh (which installs the peers and builds build-bench); see README.md there.
+Every measurement is `drange_bench_run --peer P --input F` under `timeout`, with an address
+space limit, so a peer that runs too long shows "> T s" and one that runs out of memory "OOM".
+"""
+import argparse
+import datetime
+import os
+import platform
+import resource
+import shlex
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+
+PEERS_BY_DIM = {
+    2: ["cgal2", "cgal-dd", "cgal-dd-dyn", "qhull", "fortune"],
+    3: ["cgal3", "cgal3-par", "cgal-dd", "cgal-dd-dyn", "qhull", "tetgen"],
+}
+HIGH_D_PEERS = ["cgal-dd", "cgal-dd-dyn", "qhull"]
+ALL_PEERS = ["cgal2", "cgal3", "cgal3-par", "cgal-dd", "cgal-dd-dyn", "qhull", "fortune", "tetgen"]
+PEER_TITLES = {
+    "cgal2": "CGAL 2D", "cgal3": "CGAL 3D", "cgal3-par": "CGAL 3D par", "cgal-dd": "CGAL dD static",
+    "cgal-dd-dyn": "CGAL dD dynamic", "qhull": "Qhull", "fortune": "Fortune (Boost)", "tetgen": "TetGen",
+}
+
+# (distribution, n, d): the standard set of issue 4, and the quick subset.
+STANDARD = [
+    ("uniform", 100000, 2), ("uniform", 250000, 2), ("uniform", 500000, 2), ("uniform", 1000000, 2),
+    ("gaussian", 1000000, 2), ("grid", 1000000, 2), ("sphere", 20000, 2),
+    ("uniform", 100000, 3), ("uniform", 1000000, 3), ("gaussian", 200000, 3), ("grid", 216000, 3),
+    ("sphere", 2000, 3),
+    ("uniform", 100000, 4), ("uniform", 20000, 5), ("uniform", 5000, 6), ("uniform", 1000, 7), ("uniform", 300, 8),
+]
+QUICK = [("uniform", 100000, 2), ("grid", 90000, 2), ("uniform", 100000, 3), ("uniform", 10000, 4), ("uniform", 3000, 5)]
+# Ablation: (distribution, n, d, variants).
+ABLATION = [
+    ("uniform", 100000, 2, ["full", "no-prune", "no-order", "kdtree"]),
+    ("uniform", 20000, 2, ["full", "no-prune", "no-order", "kdtree", "scan"]),
+    ("uniform", 20000, 3, ["full", "no-prune", "no-order", "kdtree"]),
+]
+QUICK_ABLATION = [("uniform", 20000, 2, ["full", "no-prune", "no-order", "kdtree", "scan"])]
+
+
+def log(*args):
+    print(*args, file=sys.stderr, flush=True)
+
+
+def grid_label(dist, n, d):
+    if dist != "grid":
+        return None
+    k = round(n ** (1.0 / d))
+    return f"{k}^{d}" if k ** d == n else None
+
+
+def input_file(build, data, dist, n, d):
+    path = os.path.join(data, f"{dist}_{d}d_{n}.txt")
+    if not os.path.exists(path):
+        subprocess.run([os.path.join(build, "drange"), "generate", dist, str(n), str(d), "--seed", "1", "-o", path],
+                       check=True)
+    return path
+
+
+def run_one(build, peer, path, timeout, mem_limit, threads=1, variant=None):
+    cmd = [os.path.join(build, "bench", "drange_bench_run"), "--peer", peer, "--input", path, "--threads", str(threads)]
+    if variant:
+        cmd += ["--variant", variant]
+
+    def limit():
+        if mem_limit:
+            resource.setrlimit(resource.RLIMIT_AS, (mem_limit, mem_limit))
+
+    start = time.monotonic()
+    try:
+        p = subprocess.run(["timeout", "-s", "KILL", str(timeout)] + cmd, capture_output=True, text=True,
+                           preexec_fn=limit)
+    except OSError as e:
+        return {"status": "error", "message": str(e)}
+    wall = time.monotonic() - start
+    result = {"status": "error", "wall": wall}
+    for line in p.stdout.splitlines():
+        if line.startswith("RESULT "):
+            for token in line.split()[1:]:
+                key, _, value = token.partition("=")
+                result[key] = value
+    if p.returncode == 137 or p.returncode == 124 or (p.returncode == -9):
+        result["status"] = "timeout" if wall >= timeout - 1 else "oom"  # SIGKILL before the limit: the OOM killer
+    elif p.returncode != 0 and result.get("status") == "ok":
+        result["status"] = "error"
+    elif result.get("status") == "error" and ("bad_alloc" in p.stderr or "memory" in p.stderr.lower()):
+        result["status"] = "oom"
+    if p.returncode not in (0,) and p.stderr:
+        result["message"] = p.stderr.strip().splitlines()[-1][:200]
+    log(f"  {peer:12s} {os.path.basename(path):28s} {variant or '':9s} -> {result.get('status')}"
+        f" {result.get('seconds', '')} s  (wall {wall:.1f} s)")
+    return result
+
+
+def mib(r):
+    return f"{int(r['peak_rss']) / 2**20:.0f}" if "peak_rss" in r else ""
+
+
+def secs(r, timeout):
+    s = r.get("status")
+    if s == "ok":
+        v = float(r["seconds"])
+        return f"{v:.3f}" if v < 10 else f"{v:.1f}"
+    if s == "timeout":
+        return f"> {timeout} s"
+    if s == "oom":
+        return "OOM"
+    if s in ("n/a", "not-built", "skipped"):
+        return s
+    return "error"
+
+
+def ratio(ours, theirs, timeout):
+    if ours.get("status") == "ok" and theirs.get("status") == "ok":
+        return f"{float(ours['seconds']) / max(float(theirs['seconds']), 1e-9):.2f}"
+    if ours.get("status") == "ok" and theirs.get("status") == "timeout":
+        return f"< {float(ours['seconds']) / timeout:.2f}"
+    if ours.get("status") == "timeout" and theirs.get("status") == "ok":
+        return f"> {timeout / max(float(theirs['seconds']), 1e-9):.2f}"
+    return ""
+
+
+def machine():
+    lines = []
+    model = cores = ""
+    try:
+        out = subprocess.run(["lscpu"], capture_output=True, text=True).stdout
+        for line in out.splitlines():
+            if line.startswith("Model name:"):
+                model = line.split(":", 1)[1].strip()
+            if line.startswith("CPU(s):"):
+                cores = line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    ram = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") / 2**30
+    gxx = subprocess.run(["g++", "--version"], capture_output=True, text=True).stdout.splitlines()[0]
+    lines.append(f"- CPU: {model}, {cores} logical CPUs; RAM {ram:.1f} GiB; {platform.system()} {platform.release()}")
+    lines.append(f"- Compiler: {gxx}; Release build (build-bench)")
+    pk = []
+    for p in ["libcgal-dev", "libqhull-dev", "libboost-dev", "libtbb-dev", "libtet1.5-dev", "libeigen3-dev"]:
+        v = subprocess.run(["dpkg-query", "-W", "-f", "${Version}", p], capture_output=True, text=True).stdout
+        pk.append(f"{p} {v or 'not installed'}")
+    lines.append("- Peers: " + ", ".join(pk))
+    return lines
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", required=True)
+    ap.add_argument("--data", required=True)
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--ablation-only", action="store_true")
+    ap.add_argument("--no-ablation", action="store_true")
+    ap.add_argument("--timeout", type=int, default=None)
+    ap.add_argument("--mem-limit-gib", type=float, default=16)
+    ap.add_argument("--command", default="")
+    ap.add_argument("-o", "--output", required=True)
+    args = ap.parse_args()
+    timeout = args.timeout or (30 if args.quick else 90)
+    mem_limit = int(args.mem_limit_gib * 2**30) if args.mem_limit_gib > 0 else 0
+    os.makedirs(args.data, exist_ok=True)
+    rows = QUICK if args.quick else STANDARD
+    ablation = QUICK_ABLATION if args.quick else ABLATION
+    if args.ablation_only:
+        rows = []
+    if args.no_ablation:
+        ablation = []
+
+    started = time.monotonic()
+    load_before = open("/proc/loadavg").read().split()[:3]
+    out = []
+    out.append(f"# drange benchmark ({'quick' if args.quick else 'standard'} set)")
+    out.append("")
+    out.append(f"Command: `{args.command}`  ")
+    out.append(f"Date: {datetime.datetime.now().strftime('%Y-%m-%d %H:%M')}; per-run timeout {timeout} s; "
+               f"address-space limit {args.mem_limit_gib:g} GiB per run")
+    out.append("")
+    out.extend(machine())
+    out.append(f"- Load average before: {' '.join(load_before)}")
+
+    results = []  # (row, peer, result) for the CSV
+    table = []
+    if rows:
+        peers_in_set = [p for p in ALL_PEERS if any(p in PEERS_BY_DIM.get(d, HIGH_D_PEERS) for _, _, d in rows)]
+        head = ["input", "d", "n", "drange s", "drange MiB", "bytes/simplex", "calls/simplex", "simplices"]
+        for p in peers_in_set:
+            t = PEER_TITLES[p]
+            head += [f"{t} s", f"{t} MiB", f"drange/{t}"]
+        table.append("| " + " | ".join(head) + " |")
+        table.append("|" + "---|" * len(head))
+        timed_out = set()  # peers that timed out or ran out of memory on uniform input: not run in higher d
+        for dist, n, d in rows:
+            path = input_file(args.build, args.data, dist, n, d)
+            log(f"{dist} {d}D {n}")
+            ours = run_one(args.build, "drange", path, timeout, mem_limit)
+            results.append((dist, n, d, "drange", ours))
+            label = grid_label(dist, n, d)
+            cells = [dist + (f" {label}" if label else ""), str(d), f"{n:,}".replace(",", " "), secs(ours, timeout),
+                     mib(ours)]
+            if ours.get("status") == "ok":
+                own = int(ours["peak_rss"]) - int(ours["input_rss"])
+                cells += [f"{own / max(int(ours['simplices']), 1):.0f}", ours.get("calls_per_simplex", ""),
+                          ours["simplices"]]
+            else:
+                cells += ["", "", ""]
+            applicable = PEERS_BY_DIM.get(d, HIGH_D_PEERS)
+            for p in peers_in_set:
+                if p not in applicable:
+                    cells += ["n/a", "", ""]
+                    continue
+                if p in timed_out and dist == "uniform" and d >= 4:
+                    r = {"status": "skipped"}
+                    log(f"  {p:12s} skipped (timed out or out of memory at a lower d)")
+                else:
+                    threads = 2 if p == "cgal3-par" else 1
+                    r = run_one(args.build, p, path, timeout, mem_limit, threads=threads)
+                    if r.get("status") in ("timeout", "oom") and dist == "uniform" and d >= 4:
+                        timed_out.add(p)
+                results.append((dist, n, d, p, r))
+                simp = ""
+                if r.get("status") == "ok" and ours.get("status") == "ok" and r.get("simplices") != ours.get("simplices"):
+                    simp = f" ({r['simplices']} simplices)" if p != "fortune" else f" ({r['simplices']} Voronoi vertices)"
+                cells += [secs(r, timeout) + simp, mib(r), ratio(ours, r, timeout)]
+            table.append("| " + " | ".join(cells) + " |")
+
+    abl = []
+    if ablation:
+        abl.append("| input | d | n | variant | total s | search s | calls/simplex | points tested/simplex | simplices |")
+        abl.append("|---|---|---|---|---|---|---|---|---|")
+        for dist, n, d, variants in ablation:
+            path = input_file(args.build, args.data, dist, n, d)
+            log(f"ablation {dist} {d}D {n}")
+            for v in variants:
+                r = run_one(args.build, "drange", path, timeout, mem_limit, variant=v)
+                results.append((dist, n, d, f"drange:{v}", r))
+                if r.get("status") == "ok":
+                    abl.append(f"| {dist} | {d} | {n} | {v} | {secs(r, timeout)} | {float(r['search_seconds']):.3f} | "
+                               f"{r['calls_per_simplex']} | {r['tested_per_simplex']} | {r['simplices']} |")
+                else:
+                    abl.append(f"| {dist} | {d} | {n} | {v} | {secs(r, timeout)} | | | | |")
+
+    load_after = open("/proc/loadavg").read().split()[:3]
+    elapsed = time.monotonic() - started
+    out.append(f"- Load average after: {' '.join(load_after)}; the whole run took {elapsed / 60:.1f} min")
+    out.append("")
+    out.append("Times are construction only (file reading excluded; conversion to each peer's point type "
+               "excluded), one process per measurement, one thread except `CGAL 3D par` (2 threads). "
+               "MiB is the process's peak RSS (getrusage), input points included; bytes/simplex is drange's "
+               "peak RSS minus the RSS after reading the input, divided by the simplices. Ratio = drange seconds / "
+               "peer seconds: below 1 drange is faster. A count in parentheses is a peer's simplex count where it "
+               "differs from drange's (Fortune counts Voronoi vertices: fewer than triangles on cocircular input). "
+               "`skipped`: the peer timed out or ran out of memory at a lower d on uniform input and was not run.")
+    out.append("")
+    if table:
+        out.append("## Construction")
+        out.append("")
+        out.extend(table)
+        out.append("")
+    if abl:
+        out.append("## Ablation (drange --variant)")
+        out.append("")
+        out.extend(abl)
+        out.append("")
+    with open(args.output, "w") as f:
+        f.write("\n".join(out) + "\n")
+    with open(os.path.splitext(args.output)[0] + ".csv", "w") as f:
+        f.write("distribution,n,d,peer,status,simplices,seconds,peak_rss,input_rss,calls_per_simplex,search_seconds\n")
+        for dist, n, d, p, r in results:
+            f.write(",".join(str(x) for x in [dist, n, d, p, r.get("status", ""), r.get("simplices", ""),
+                                               r.get("seconds", ""), r.get("peak_rss", ""), r.get("input_rss", ""),
+                                               r.get("calls_per_simplex", ""), r.get("search_seconds", "")]) + "\n")
+    log(f"wrote {args.output} ({elapsed / 60:.1f} min)")
+
+
+if __name__ == "__main__":
+    main()

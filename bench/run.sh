@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# bench/run.sh: drange against its peers (issue 4). Installs what is missing (Debian packages,
+# as scripts/setup.sh does), builds ./build-bench with -DDRANGE_BUILD_BENCH=ON (Release),
+# generates the inputs into bench/data (git-ignored) and runs every (input, peer) pair in a
+# process of its own, with a timeout; writes one Markdown table (and a .csv of the raw lines).
+#
+#   bench/run.sh [--quick] [--ablation] [--micro] [--timeout S] [-o FILE]
+#
+#   (none)       the standard set and the ablation          -> bench/results.md
+#   --quick      a subset, under 2 minutes on 2 cores        -> bench/results-quick.md
+#   --ablation   the ablation table alone                   -> bench/results-ablation.md
+#   --micro      also run the Google Benchmark microbenchmarks (appended to the file)
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+command_line="bench/run.sh $*"
+quick=0; ablation=0; micro=0; output=""; timeout=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) quick=1 ;;
+    --ablation) ablation=1 ;;
+    --micro) micro=1 ;;
+    --timeout) timeout=(--timeout "$2"); shift ;;
+    -o) output="$2"; shift ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+packages=(g++ cmake make libgmp-dev libcgal-dev libeigen3-dev libboost-dev libqhull-dev libtbb-dev libbenchmark-dev
+          python3 util-linux)
+missing=()
+for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
+# TetGen's library, where the distribution has it (Debian 12: libtet1.5-dev).
+if ! dpkg -s libtet1.5-dev >/dev/null 2>&1 && apt-cache show libtet1.5-dev >/dev/null 2>&1; then missing+=(libtet1.5-dev); fi
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "bench: installing ${missing[*]}" >&2
+  if [ "$(id -u)" -eq 0 ]; then sudo=""; elif command -v sudo >/dev/null; then sudo="sudo"; else
+    echo "bench: please install as root: apt-get install ${missing[*]}" >&2; exit 1
+  fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+build="$root/build-bench"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DDRANGE_BUILD_BENCH=ON -DDRANGE_BUILD_TESTS=OFF >/dev/null
+cmake --build "$build" -j"$(nproc)" >&2
+
+args=(--build "$build" --data "$root/bench/data" --command "$command_line" "${timeout[@]}")
+if [ $quick -eq 1 ]; then
+  args+=(--quick); output="${output:-$root/bench/results-quick.md}"
+elif [ $ablation -eq 1 ]; then
+  args+=(--ablation-only); output="${output:-$root/bench/results-ablation.md}"
+else
+  output="${output:-$root/bench/results.md}"
+fi
+/usr/bin/python3 "$root/bench/run.py" "${args[@]}" -o "$output"
+
+if [ $micro -eq 1 ] && [ -x "$build/bench/drange_bench_micro" ]; then
+  {
+    echo
+    echo "## Microbenchmarks (Google Benchmark)"
+    echo
+    echo '```'
+    "$build/bench/drange_bench_micro" --benchmark_min_time=0.2 2>&1
+    echo '```'
+  } >> "$output"
+fi
+echo "bench: wrote $output" >&2
