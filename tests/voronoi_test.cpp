@@ -197,8 +197,9 @@ TEST_P(VoronoiRandom, DiagramIsConsistentWithTheTriangulation) {
   for (std::size_t i = 0; i < points.size(); ++i) EXPECT_EQ(v.region_point[static_cast<std::size_t>(v.point_region[i])], static_cast<int>(i));
 }
 
-// A bounded cell's volume from the flag decomposition equals, in 2D, the shoelace area of
-// the region's counter-clockwise vertices (an independent formula on independent data).
+// A bounded cell's volume (in 2D: pyramids from the point over its ridges, read from the
+// ridge lists) equals the shoelace area of the region's counter-clockwise vertices (another
+// formula, on the region lists).
 class VoronoiRandom2D : public VoronoiRandom {};
 
 TEST_P(VoronoiRandom2D, RegionsAreCounterClockwiseWithTheirArea) {
