@@ -61,8 +61,9 @@ int run_delaunay_demo(const std::string& variant, bool print_stats) {
   print_summary(triangulation.stats);
   std::printf(
       "\nTo triangulate your own points:  drange delaunay POINTS -o SIMPLICES\n"
+      "Their Voronoi diagram:           drange voronoi POINTS -o DIAGRAM.json [--svg PICTURE.svg]\n"
       "(drange generate uniform 1000 3 -o points.txt writes a test file; drange delaunay --help\n"
-      "lists the formats and options.)\n");
+      "and drange voronoi --help list the formats and options.)\n");
   std::fflush(stdout);
   if (print_stats) std::cerr << triangulation.stats.summary() << '\n';
   return kExitSuccess;
