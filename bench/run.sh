@@ -30,18 +30,10 @@ done
 
 packages=(g++ cmake make libgmp-dev libcgal-dev libeigen3-dev libboost-dev libqhull-dev libtbb-dev libbenchmark-dev
           python3 util-linux)
-missing=()
-for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done
 # TetGen's library, where the distribution has it (Debian 12: libtet1.5-dev).
-if ! dpkg -s libtet1.5-dev >/dev/null 2>&1 && apt-cache show libtet1.5-dev >/dev/null 2>&1; then missing+=(libtet1.5-dev); fi
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "bench: installing ${missing[*]}" >&2
-  if [ "$(id -u)" -eq 0 ]; then sudo=""; elif command -v sudo >/dev/null; then sudo="sudo"; else
-    echo "bench: please install as root: apt-get install ${missing[*]}" >&2; exit 1
-  fi
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
-fi
+if apt-cache show libtet1.5-dev >/dev/null 2>&1; then packages+=(libtet1.5-dev); fi
+source "$root/scripts/install_packages.sh"
+install_packages bench "${packages[@]}"
 
 build="$root/build-bench"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DDRANGE_BUILD_BENCH=ON -DDRANGE_BUILD_TESTS=OFF >/dev/null
