@@ -16,18 +16,6 @@
 namespace drange::diagram {
 namespace {
 
-// Marks the points on the convex hull: those of a facet without neighbour.
-std::vector<char> hull_points(const Triangulation& t) {
-  std::vector<char> on_hull(t.num_points, 0);
-  const int width = t.dim + 1;
-  for (std::size_t s = 0; s < t.size(); ++s)
-    for (int k = 0; k < width; ++k)
-      if (t.neighbors[s * static_cast<std::size_t>(width) + static_cast<std::size_t>(k)] < 0)
-        for (int j = 0; j < width; ++j)
-          if (j != k) on_hull[static_cast<std::size_t>(t.simplex(s)[j])] = 1;
-  return on_hull;
-}
-
 // The (d-1)-measure of a bounded ridge: a segment's length (2D) or a planar polygon's area
 // (3D; its vertices in cyclic order).
 double ridge_measure(const Voronoi& v, std::size_t r) {
@@ -70,19 +58,9 @@ std::vector<double> volumes_from_ridges(PointsView points, const Voronoi& v) {
 
 }  // namespace
 
-void compute_cell_volumes(PointsView points, const Triangulation& t, Voronoi& out) {
-  if (t.dim <= 3) {
-    const std::vector<char> on_hull = hull_points(t);
-    const std::vector<double> volume = volumes_from_ridges(points, out);
-    out.volumes.resize(out.region_point.size());
-    for (std::size_t r = 0; r < out.region_point.size(); ++r) {
-      const auto p = static_cast<std::size_t>(out.region_point[r]);
-      out.volumes[r] = on_hull[p] ? std::numeric_limits<double>::infinity() : volume[p];
-    }
-    return;
-  }
-  const std::vector<char> on_hull = hull_points(t);
-  const std::vector<double> volume = flag_cell_volumes(points, t, on_hull);
+void compute_cell_volumes(PointsView points, const Triangulation& t, const std::vector<char>& on_hull, Voronoi& out) {
+  const std::vector<double> volume =
+      t.dim <= 3 ? volumes_from_ridges(points, out) : flag_cell_volumes(points, t, on_hull);
   out.volumes.resize(out.region_point.size());
   for (std::size_t r = 0; r < out.region_point.size(); ++r) {
     const auto p = static_cast<std::size_t>(out.region_point[r]);

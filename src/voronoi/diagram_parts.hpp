@@ -2,6 +2,8 @@
 // its vertex classes (vertex_classes.hpp), one file each.
 #pragma once
 
+#include <vector>
+
 #include "drange/delaunay.hpp"
 #include "drange/points.hpp"
 #include "drange/voronoi.hpp"
@@ -14,9 +16,11 @@ namespace drange::diagram {
 void build_ridges(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence, Voronoi& out);
 
 // regions.cpp: regions, point_region and region_point (duplicates share their original's).
-void build_regions(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence, Voronoi& out);
+// on_hull: hull_points(t).
+void build_regions(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence,
+                   const std::vector<char>& on_hull, Voronoi& out);
 
 // cell_volumes.cpp: the volume of every region whose cell is bounded, +infinity otherwise.
-void compute_cell_volumes(PointsView points, const Triangulation& t, Voronoi& out);
+void compute_cell_volumes(PointsView points, const Triangulation& t, const std::vector<char>& on_hull, Voronoi& out);
 
 }  // namespace drange::diagram

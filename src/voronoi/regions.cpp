@@ -12,21 +12,10 @@
 namespace drange::diagram {
 namespace {
 
-bool on_hull(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence, std::int32_t p) {
-  const int width = t.dim + 1;
-  for (const std::int32_t* it = incidence.begin(static_cast<std::size_t>(p)); it != incidence.end(static_cast<std::size_t>(p)); ++it) {
-    const std::int32_t* row = t.simplex(static_cast<std::size_t>(*it));
-    for (int k = 0; k < width; ++k)
-      if (row[k] != p && classes.hull_class(t, static_cast<std::size_t>(*it), k) >= 0)
-        return true;
-  }
-  return false;
-}
-
 // Appends p's region: -1 first when the cell is unbounded, then its vertices (2D: in
 // counter-clockwise order; otherwise ascending).
-void append_region(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence, std::int32_t p,
-                   IndexLists& out) {
+void append_region(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence,
+                   const std::vector<char>& on_hull, std::int32_t p, IndexLists& out) {
   const std::size_t row_start = out.values.size();
   if (t.dim == 2) {
     bool closed;
@@ -39,7 +28,7 @@ void append_region(const Triangulation& t, const VertexClasses& classes, const I
     if (closed && out.values.size() - row_start > 1 && out.values.back() == out.values[row_start]) out.values.pop_back();
     return;
   }
-  if (on_hull(t, classes, incidence, p)) out.values.push_back(-1);
+  if (on_hull[static_cast<std::size_t>(p)]) out.values.push_back(-1);
   const std::size_t first_vertex = out.values.size();
   for (const std::int32_t* it = incidence.begin(static_cast<std::size_t>(p)); it != incidence.end(static_cast<std::size_t>(p)); ++it)
     out.values.push_back(classes.of_simplex[static_cast<std::size_t>(*it)]);
@@ -50,14 +39,15 @@ void append_region(const Triangulation& t, const VertexClasses& classes, const I
 
 }  // namespace
 
-void build_regions(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence, Voronoi& out) {
+void build_regions(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence,
+                   const std::vector<char>& on_hull, Voronoi& out) {
   // Regions are numbered in the order the points are visited (incidence.order, for cache
   // locality); point_region maps each input point to its own.
   out.point_region.assign(t.num_points, -1);
   for (const std::int32_t p : incidence.order) {
     out.point_region[static_cast<std::size_t>(p)] = static_cast<std::int32_t>(out.regions.size());
     out.region_point.push_back(p);
-    append_region(t, classes, incidence, p, out.regions);
+    append_region(t, classes, incidence, on_hull, p, out.regions);
     out.regions.end_row();
   }
   // A duplicate has no simplex; it shares the region of the point it copies.

@@ -22,6 +22,17 @@ Incidence point_incidence(const Triangulation& t) {
   return out;
 }
 
+std::vector<char> hull_points(const Triangulation& t) {
+  std::vector<char> on_hull(t.num_points, 0);
+  const auto width = static_cast<std::size_t>(t.dim + 1);
+  for (std::size_t s = 0; s < t.size(); ++s)
+    for (std::size_t k = 0; k < width; ++k)
+      if (t.neighbors[s * width + k] < 0)
+        for (std::size_t j = 0; j < width; ++j)
+          if (j != k) on_hull[static_cast<std::size_t>(t.simplex(s)[j])] = 1;
+  return on_hull;
+}
+
 // In a positively oriented triangle (v0, v1, v2) the vertices run counter-clockwise. With p
 // at position i, the triangle after it counter-clockwise around p shares the edge from p to
 // v[i+2], so it is the neighbour opposite v[i+1]; the one before it is opposite v[i+2].

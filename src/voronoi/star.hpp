@@ -26,6 +26,10 @@ struct Incidence {
 
 Incidence point_incidence(const Triangulation& t);
 
+// on_hull[p] != 0 when input point p is a vertex of a hull facet (a facet without neighbour):
+// its Voronoi cell is unbounded.
+std::vector<char> hull_points(const Triangulation& t);
+
 // The position of input point v in simplex s (v must be a vertex of s).
 inline int position_in(const Triangulation& t, std::size_t s, std::int32_t v) {
   const std::int32_t* row = t.simplex(s);

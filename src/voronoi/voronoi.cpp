@@ -7,6 +7,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "drange/errors.hpp"
 #include "voronoi/diagram_parts.hpp"
@@ -28,10 +29,11 @@ Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell
   diagram::VertexClasses classes = diagram::classify_vertices(points, t);
   const diagram::Incidence incidence = diagram::point_incidence(t);
   diagram::build_ridges(t, classes, incidence, out);
-  diagram::build_regions(t, classes, incidence, out);
+  const std::vector<char> on_hull = diagram::hull_points(t);
+  diagram::build_regions(t, classes, incidence, on_hull, out);
   out.simplex_vertex = std::move(classes.of_simplex);
   out.vertices = std::move(classes.vertices);
-  if (cell_volumes) diagram::compute_cell_volumes(points, t, out);  // uses the vertices in 2D/3D
+  if (cell_volumes) diagram::compute_cell_volumes(points, t, on_hull, out);  // uses the vertices in 2D/3D
   return out;
 }
 
