@@ -7,6 +7,7 @@
 #include "drange/formats.hpp"
 #include "drange/generate.hpp"
 #include "drange/io.hpp"
+#include "drange/locate.hpp"
 #include "drange/points.hpp"
 #include "drange/svg.hpp"
 #include "drange/voronoi.hpp"
