@@ -1,0 +1,17 @@
+"""drange: exact Delaunay triangulations and Voronoi diagrams of points in 2 to 11 dimensions.
+
+The classes have the names, attributes and methods of scipy.spatial's, so switching is one
+line::
+
+    from drange import Delaunay, Voronoi      # instead of: from scipy.spatial import ...
+
+Every decision is exact (no joggling, no tolerance): integer grids, cospherical points and
+duplicates give one well-defined triangulation, the same for any input order.
+"""
+from ._drange import DegenerateInputError, Error
+from ._delaunay import Delaunay
+from ._voronoi import ClippedCells, Voronoi
+from ._check import check_triangulation
+
+__all__ = ["Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error", "DegenerateInputError"]
+__version__ = "0.1.0"

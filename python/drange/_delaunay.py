@@ -1,0 +1,175 @@
+"""drange.Delaunay: scipy.spatial.Delaunay's interface over the D-Range engine."""
+from functools import cached_property
+
+import numpy as np
+
+from . import _drange
+from ._points import as_points, check_options, check_scipy_arguments
+
+
+class Delaunay:
+    """Delaunay triangulation in N >= 2 dimensions, exact.
+
+    Parameters
+    ----------
+    points : array_like, shape (npoints, ndim)
+        Coordinates of the points, 2 <= ndim <= 11.
+    furthest_site, incremental, qhull_options
+        scipy's arguments, accepted so that code switches in one line. Only the defaults are
+        supported (furthest_site=True and incremental=True raise NotImplementedError);
+        qhull_options has no effect, since no decision needs a tolerance or a joggle.
+    threads : int, keyword only
+        Threads for the search; 0 (default) uses all cores.
+    variant : str, keyword only
+        The search variant: "full" (default), or one of the paper's ablations
+        ("scan", "kdtree", "no-prune", "no-order"), for comparison.
+    progress : callable, keyword only
+        Called as progress(simplices_found) every 65536 simplices, and once at the end.
+
+    Attributes
+    ----------
+    points : ndarray of double, (npoints, ndim)
+    simplices : ndarray of int32, (nsimplex, ndim+1)
+        Point indices of each simplex, positively oriented.
+    neighbors : ndarray of int32, (nsimplex, ndim+1)
+        Neighbour k is opposite vertex k; -1 on the hull.
+    coplanar : ndarray of int32, (ncoplanar, 3)
+        The exact duplicates, left out of the triangulation: point index, a simplex holding
+        it, and the index of the point it copies.
+    statistics : dict
+        The engine's counters and timings.
+
+    The other attributes (convex_hull, vertex_neighbor_vertices, vertex_to_simplex,
+    equations, transform) are computed on first use.
+    """
+
+    def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None, *,
+                 threads=0, variant="full", progress=None):
+        check_scipy_arguments(furthest_site, incremental, qhull_options)
+        check_options(variant, threads)
+        self.points = as_points(points)
+        self._core = _drange.triangulate(self.points, variant, int(threads), progress)
+        self.simplices = self._core.simplices
+        self.neighbors = self._core.neighbors
+        self.statistics = self._core.statistics
+        self.furthest_site = False
+        self.paraboloid_scale = 1.0
+        self.paraboloid_shift = 0.0
+
+    npoints = property(lambda self: self.points.shape[0], doc="Number of input points.")
+    ndim = property(lambda self: self.points.shape[1], doc="Dimension of the space.")
+    nsimplex = property(lambda self: self.simplices.shape[0], doc="Number of simplices.")
+    min_bound = property(lambda self: self.points.min(axis=0), doc="Minimum of the points' coordinates.")
+    max_bound = property(lambda self: self.points.max(axis=0), doc="Maximum of the points' coordinates.")
+
+    @cached_property
+    def vertex_to_simplex(self):
+        """For each point, a simplex it is a vertex of; -1 for duplicates."""
+        result = np.full(self.npoints, -1, dtype=np.int32)
+        result[self.simplices.ravel()] = np.repeat(np.arange(self.nsimplex, dtype=np.int32), self.ndim + 1)
+        return result
+
+    @cached_property
+    def coplanar(self):
+        """(ncoplanar, 3): each exact duplicate, a simplex that holds it, the point it copies."""
+        pairs = self._core.duplicates
+        result = np.empty((len(pairs), 3), dtype=np.int32)
+        result[:, 0] = pairs[:, 0]
+        result[:, 1] = self.vertex_to_simplex[pairs[:, 1]]
+        result[:, 2] = pairs[:, 1]
+        return result
+
+    @cached_property
+    def convex_hull(self):
+        """(nfaces, ndim): the hull facets, ordered counter-clockwise in 2D and counter-clockwise
+        seen from outside in 3D (in general: det[f1-f0, ..., f(d-1)-f0, x-f0] has the sign
+        (-1)^ndim for x inside)."""
+        d = self.ndim
+        simplex, opposite = np.nonzero(self.neighbors == -1)
+        columns = np.arange(d + 1)
+        keep = columns[None, :] != opposite[:, None]
+        facets = self.simplices[simplex][keep].reshape(-1, d)
+        # Removing vertex k from a positive simplex leaves a facet oriented by (-1)^(d-k); one
+        # transposition where k is odd gives every facet the orientation (-1)^d.
+        odd = (opposite % 2) == 1
+        facets[odd, 0], facets[odd, 1] = facets[odd, 1], facets[odd, 0].copy()
+        return facets
+
+    @cached_property
+    def vertex_neighbor_vertices(self):
+        """(indptr, indices): the neighbours of point k are indices[indptr[k]:indptr[k+1]]."""
+        d, n = self.ndim, self.npoints
+        first, second = np.triu_indices(d + 1, 1)
+        a = self.simplices[:, first].ravel().astype(np.int64)
+        b = self.simplices[:, second].ravel().astype(np.int64)
+        edges = np.unique(np.concatenate([a * n + b, b * n + a]))
+        source, target = np.divmod(edges, n)
+        indptr = np.searchsorted(source, np.arange(n + 1)).astype(np.int32)
+        return indptr, target.astype(np.int32)
+
+    @cached_property
+    def transform(self):
+        """(nsimplex, ndim+1, ndim): barycentric transforms, as scipy's. For simplex i,
+        c = transform[i, :ndim] @ (x - transform[i, ndim]) gives the first ndim barycentric
+        coordinates of x; the last is 1 - sum(c)."""
+        d = self.ndim
+        corners = self.points[self.simplices]  # (nsimplex, d+1, d)
+        origin = corners[:, d, :]
+        columns = (corners[:, :d, :] - origin[:, None, :]).transpose(0, 2, 1)
+        result = np.empty((self.nsimplex, d + 1, d))
+        result[:, :d, :] = np.linalg.inv(columns)
+        result[:, d, :] = origin
+        return result
+
+    @cached_property
+    def equations(self):
+        """(nsimplex, ndim+2): the hyperplane [normal, offset] of each simplex lifted to the
+        paraboloid x -> (x, |x|^2), with a unit normal pointing down (out of the lifted hull).
+        The distance of a lifted point is positive inside the simplex's circumsphere."""
+        d = self.ndim
+        corners = self.points[self.simplices]
+        base = corners[:, 0, :]
+        edges = corners[:, 1:, :] - base[:, None, :]
+        # Circumcentre c = base + y with 2 (v_i - base) . y = |v_i - base|^2.
+        y = np.linalg.solve(2 * edges, np.einsum("ijk,ijk->ij", edges, edges)[..., None])[..., 0]
+        centre = base + y
+        radius2 = np.einsum("ij,ij->i", y, y)
+        # On the sphere |x|^2 = 2 c.x - |c|^2 + r^2; the plane z - 2 c.x + |c|^2 - r^2 = 0.
+        result = np.empty((self.nsimplex, d + 2))
+        result[:, :d] = 2 * centre
+        result[:, d] = -1.0
+        result[:, d + 1] = radius2 - np.einsum("ij,ij->i", centre, centre)
+        result /= np.linalg.norm(result[:, :d + 1], axis=1)[:, None]
+        return result
+
+    def lift_points(self, x):
+        """Lifts points to the paraboloid: (x, |x|^2 * paraboloid_scale + paraboloid_shift)."""
+        x = np.asarray(x, dtype=np.float64)
+        z = np.sum(x * x, axis=-1) * self.paraboloid_scale + self.paraboloid_shift
+        return np.concatenate([x, z[..., None]], axis=-1)
+
+    def plane_distance(self, xi):
+        """Distances of the lifted point xi (shape (ndim,)) to every simplex's lifted plane."""
+        xi = np.asarray(xi, dtype=np.float64)
+        if xi.shape != (self.ndim,):
+            raise ValueError(f"xi must have shape ({self.ndim},); got {xi.shape}")
+        return self.equations[:, :-1] @ self.lift_points(xi) + self.equations[:, -1]
+
+    def find_simplex(self, xi, bruteforce=False, tol=None):
+        """The simplex containing each point of xi (shape (..., ndim)), -1 outside the hull.
+
+        Exact: a point on a shared face, a vertex or the hull boundary is found in one of the
+        simplices that hold it, a point one rounding error outside is outside, and NaN gives -1.
+        `bruteforce` and `tol` are scipy's and have no effect here.
+        """
+        xi = np.asarray(xi, dtype=np.float64)
+        if xi.ndim == 0 or xi.shape[-1] != self.ndim:
+            raise ValueError(f"wrong dimensionality in xi: shape {xi.shape}, expected (..., {self.ndim})")
+        found = self._core.find_simplex(np.ascontiguousarray(xi.reshape(-1, self.ndim)))
+        return found.reshape(xi.shape[:-1])
+
+    def close(self):
+        """scipy's method; drange keeps no Qhull state, so there is nothing to release."""
+
+    def __repr__(self):
+        return f"<drange.Delaunay: {self.npoints} points in {self.ndim}D, {self.nsimplex} simplices>"

@@ -1,0 +1,32 @@
+"""Turning what the user passes into what the engine reads."""
+import numpy as np
+
+from . import _drange
+
+
+def as_points(points):
+    """The points as a C-contiguous float64 array of shape (npoints, ndim); copies only if needed."""
+    array = np.ascontiguousarray(points, dtype=np.float64)
+    if array.ndim != 2:
+        raise ValueError(f"points must be a 2-D array of shape (npoints, ndim); got shape {array.shape}")
+    return array
+
+
+def check_scipy_arguments(furthest_site, incremental, qhull_options):
+    """scipy's constructor arguments: accepted where they make sense here."""
+    if furthest_site:
+        raise NotImplementedError("furthest_site=True is not supported by drange")
+    if incremental:
+        raise NotImplementedError("incremental=True (add_points) is not supported by drange")
+    if qhull_options is not None and not isinstance(qhull_options, (str, bytes)):
+        raise TypeError(f"qhull_options must be a string or None; got {type(qhull_options).__name__}")
+    # Qhull's options (joggling, tolerances, triangulated output) have no effect: every
+    # decision is exact and the output is always simplicial.
+
+
+def check_options(variant, threads):
+    names = _drange.search_variant_names
+    if not isinstance(variant, str):
+        raise TypeError(f"variant must be a string, one of {names}; got {type(variant).__name__}")
+    if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)):
+        raise TypeError(f"threads must be an integer; got {type(threads).__name__}")

@@ -1,0 +1,142 @@
+"""drange.Voronoi: scipy.spatial.Voronoi's interface, plus cell volumes and clipped cells."""
+from functools import cached_property
+
+import numpy as np
+
+from . import _drange
+from ._points import as_points, check_options, check_scipy_arguments
+
+
+def _rows(offsets, values):
+    """Ragged rows (offsets, values) as a list of lists of int."""
+    flat = values.tolist()
+    bounds = offsets.tolist()
+    return [flat[bounds[r]:bounds[r + 1]] for r in range(len(bounds) - 1)]
+
+
+class Voronoi:
+    """Voronoi diagram in N >= 2 dimensions, read off the exact Delaunay triangulation.
+
+    Parameters are scipy's (see drange.Delaunay for furthest_site, incremental,
+    qhull_options, threads, variant and progress), plus:
+
+    cell_volumes : bool, keyword only
+        Compute the volume of every bounded cell (default True).
+
+    Attributes
+    ----------
+    points : ndarray of double, (npoints, ndim)
+    vertices : ndarray of double, (nvertices, ndim)
+        The Voronoi vertices: circumcentres of the Delaunay simplices. Cospherical simplices
+        (every cell of an integer grid) share one vertex, decided exactly.
+    ridge_points : ndarray of int32, (nridges, 2)
+        The pairs of points whose cells share a (ndim-1)-face.
+    ridge_vertices : list of list of int
+        The vertices of each ridge, -1 for the point at infinity (3D: in cyclic order).
+    regions : list of list of int
+        Each cell's vertices, -1 when unbounded (2D: counter-clockwise).
+    point_region : ndarray of int32, (npoints,)
+        Each point's region; an exact duplicate shares the region of the point it copies.
+    volumes : ndarray of double, (nregions,)
+        Each region's volume (area in 2D), inf when unbounded; per point:
+        ``volumes[point_region]``. NaN everywhere if cell_volumes=False.
+    region_point : ndarray of int32, (nregions,)
+        The point of each region.
+    statistics : dict
+        The triangulation's counters and timings.
+    """
+
+    def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None, *,
+                 threads=0, variant="full", cell_volumes=True, progress=None):
+        check_scipy_arguments(furthest_site, incremental, qhull_options)
+        check_options(variant, threads)
+        self.points = as_points(points)
+        self._core = _drange.voronoi(self.points, variant, int(threads), bool(cell_volumes), progress)
+        self.vertices = self._core.vertices
+        self.ridge_points = self._core.ridge_points
+        self.point_region = self._core.point_region
+        self.region_point = self._core.region_point
+        self.simplex_vertex = self._core.simplex_vertex
+        self.statistics = self._core.statistics
+        self.furthest_site = False
+        volumes = self._core.volumes
+        self.volumes = volumes if len(volumes) == len(self.region_point) else np.full(len(self.region_point), np.nan)
+
+    npoints = property(lambda self: self.points.shape[0], doc="Number of input points.")
+    ndim = property(lambda self: self.points.shape[1], doc="Dimension of the space.")
+    min_bound = property(lambda self: self.points.min(axis=0), doc="Minimum of the points' coordinates.")
+    max_bound = property(lambda self: self.points.max(axis=0), doc="Maximum of the points' coordinates.")
+
+    @cached_property
+    def ridge_vertices(self):
+        return _rows(self._core.ridge_offsets, self._core.ridge_indices)
+
+    @cached_property
+    def regions(self):
+        return _rows(self._core.region_offsets, self._core.region_indices)
+
+    @property
+    def ridge_dict(self):
+        """{(p, q): ridge vertices}, as scipy's."""
+        return {(int(p), int(q)): v for (p, q), v in zip(self.ridge_points.tolist(), self.ridge_vertices)}
+
+    def clipped_cells(self, box=None, margin=0.1):
+        """Every cell intersected with an axis-aligned box (2D and 3D).
+
+        box : (lower, upper), each of ndim values; default: the points' bounding box enlarged
+        by `margin` times its extent on every side. Returns a ClippedCells; the cells tile the box.
+        """
+        if box is None:
+            lower, upper = _drange.default_clip_box(self.points, float(margin))
+        else:
+            lower, upper = (np.asarray(b, dtype=np.float64).ravel() for b in box)
+        return ClippedCells(self._core.clip(lower.tolist(), upper.tolist()), self.ndim, self.region_point)
+
+    def close(self):
+        """scipy's method; nothing to release."""
+
+    def __repr__(self):
+        return (f"<drange.Voronoi: {self.npoints} points in {self.ndim}D, {len(self.vertices)} vertices, "
+                f"{len(self.ridge_points)} ridges>")
+
+
+class ClippedCells:
+    """Voronoi cells clipped to a box: cell c is region c of the diagram, cut by the box.
+
+    Attributes
+    ----------
+    lower, upper : ndarray (ndim,)  the box
+    volumes : ndarray (ncells,)     area (2D) or volume (3D) of each clipped cell
+    region_point : ndarray (ncells,)  the input point of each cell
+    points : ndarray (ncorners, ndim)   the corners, each cell with its own
+    face_offsets, face_indices : the boundary loops (2D: one polygon per cell, counter-clockwise;
+        3D: one loop per face, counter-clockwise seen from outside); loop f is
+        points[face_indices[face_offsets[f]:face_offsets[f+1]]]
+    cell_faces : ndarray (ncells+1,)  cell c owns loops cell_faces[c] to cell_faces[c+1]-1
+    """
+
+    def __init__(self, parts, ndim, region_point):
+        self.ndim = ndim
+        self.lower = parts["lower"]
+        self.upper = parts["upper"]
+        self.points = parts["points"]
+        self.face_offsets = parts["face_offsets"]
+        self.face_indices = parts["face_indices"]
+        self.cell_faces = parts["cell_faces"]
+        self.volumes = parts["volumes"]
+        self.region_point = region_point
+
+    def __len__(self):
+        return len(self.volumes)
+
+    def faces(self, cell):
+        """The boundary loops of a cell, each as an array of corner coordinates."""
+        loops = range(self.cell_faces[cell], self.cell_faces[cell + 1])
+        return [self.points[self.face_indices[self.face_offsets[f]:self.face_offsets[f + 1]]] for f in loops]
+
+    def polygon(self, cell):
+        """2D: the cell's polygon, counter-clockwise, shape (ncorners, 2); empty if it misses the box."""
+        if self.ndim != 2:
+            raise ValueError(f"polygon() is for 2D cells; these are {self.ndim}D (use faces())")
+        loops = self.faces(cell)
+        return loops[0] if loops else np.empty((0, 2))

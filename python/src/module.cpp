@@ -1,0 +1,261 @@
+// python/src/module.cpp: the `drange._drange` extension. It exposes the engine's results as
+// objects that own them, with NumPy views of their arrays; drange/__init__.py builds the
+// scipy-shaped Delaunay and Voronoi classes on top.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "drange/check.hpp"
+#include "drange/delaunay.hpp"
+#include "drange/errors.hpp"
+#include "drange/locate.hpp"
+#include "drange/voronoi.hpp"
+#include "numpy_views.hpp"
+#include "run_interruptibly.hpp"
+
+namespace drange::python {
+namespace {
+
+using Points = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+PointsView points_view(const Points& points, const char* what) {
+  if (points.ndim() != 2)
+    throw py::value_error(std::string(what) + " must be a 2-D array of shape (npoints, ndim); got " +
+                          std::to_string(points.ndim()) + " dimensions");
+  return PointsView(points.data(), static_cast<std::size_t>(points.shape(0)), static_cast<int>(points.shape(1)));
+}
+
+Options engine_options(const std::string& variant, int threads, PythonProgress& progress) {
+  if (threads < 0) throw py::value_error("threads must be 0 (all cores) or positive; got " + std::to_string(threads));
+  Options options;
+  options.search = search_variant(variant);
+  // options.threads = threads;  // THREADS-MERGE
+  options.progress = progress.hook();
+  return options;
+}
+
+py::dict statistics_dict(const Statistics& s) {
+  py::dict d;
+  d["points"] = s.points;
+  d["distinct_points"] = s.distinct_points;
+  d["simplices"] = s.simplices;
+  d["hull_facets"] = s.hull_facets;
+  d["search_calls"] = s.search_calls;
+  d["calls_per_simplex"] = s.calls_per_simplex();
+  d["points_tested"] = s.points_tested;
+  d["candidates"] = s.candidates;
+  d["exact_fallbacks"] = s.exact_fallbacks;
+  d["max_open_facets"] = s.max_open_facets;
+  // d["threads"] = s.threads;  // THREADS-MERGE
+  d["seconds_kdtree"] = s.seconds_kdtree;
+  d["seconds_first_facet"] = s.seconds_first_facet;
+  d["seconds_search"] = s.seconds_search;
+  d["seconds_total"] = s.seconds_total;
+  d["peak_rss_bytes"] = s.peak_rss_bytes;
+  return d;
+}
+
+// A triangulation and the points it was computed for (kept alive: the locator views them).
+struct Triangulated {
+  Points points;
+  Triangulation result;
+  std::unique_ptr<SimplexLocator> locator;  // built by the first find_simplex
+
+  py::array_t<std::int32_t> find_simplex(const Points& queries) {
+    const PointsView view = points_view(queries, "xi");
+    if (view.dim != result.dim)
+      throw py::value_error("wrong dimensionality in xi: " + std::to_string(view.dim) + " coordinates, the points have " +
+                            std::to_string(result.dim));
+    std::vector<std::int32_t> found(view.n);
+    {
+      py::gil_scoped_release release;
+      if (!locator) locator = std::make_unique<SimplexLocator>(PointsView(points.data(), result.num_points, result.dim), result);
+      locator->find(view, found.data());
+    }
+    return adopt(std::move(found), {static_cast<py::ssize_t>(view.n)});
+  }
+};
+
+struct Diagram {
+  Points points;
+  Voronoi result;
+  Statistics statistics;
+};
+
+py::dict clipped_dict(const ClippedCells& cells) {
+  py::dict d;
+  const auto dim = static_cast<py::ssize_t>(cells.dim);
+  d["lower"] = py::array_t<double>(dim, cells.box.lower.data());
+  d["upper"] = py::array_t<double>(dim, cells.box.upper.data());
+  d["points"] = py::array_t<double>({static_cast<py::ssize_t>(cells.points.size()) / dim, dim}, cells.points.data());
+  d["face_offsets"] = py::array_t<std::int64_t>(static_cast<py::ssize_t>(cells.faces.offsets.size()), cells.faces.offsets.data());
+  d["face_indices"] = py::array_t<std::int32_t>(static_cast<py::ssize_t>(cells.faces.values.size()), cells.faces.values.data());
+  d["cell_faces"] = py::array_t<std::int64_t>(static_cast<py::ssize_t>(cells.cell_faces.size()), cells.cell_faces.data());
+  d["volumes"] = py::array_t<double>(static_cast<py::ssize_t>(cells.volumes.size()), cells.volumes.data());
+  return d;
+}
+
+void register_errors(py::module_& m) {
+  static PyObject* const error = PyErr_NewExceptionWithDoc(
+      "drange.Error", "Base of the errors drange raises for reasons of its own.", PyExc_RuntimeError, nullptr);
+  static PyObject* const degenerate = PyErr_NewExceptionWithDoc(
+      "drange.DegenerateInputError",
+      "The points have no full-dimensional triangulation: fewer than ndim+1 distinct points, or all in one hyperplane.",
+      error, nullptr);
+  m.attr("Error") = py::handle(error);
+  m.attr("DegenerateInputError") = py::handle(degenerate);
+  // Bad input and bad arguments are ValueErrors, as in scipy; the engine's message is kept.
+  py::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      if (thrown) std::rethrow_exception(thrown);
+    } catch (const DegenerateInputError& e) {
+      PyErr_SetString(degenerate, e.what());
+    } catch (const InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const UsageError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const Error& e) {
+      PyErr_SetString(error, e.what());
+    }
+  });
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_drange, m) {
+  m.doc() = "drange's engine; use the classes of the drange package.";
+  register_errors(m);
+
+  py::class_<Triangulated>(m, "Triangulated")
+      .def_property_readonly("ndim", [](const Triangulated& t) { return t.result.dim; })
+      .def_property_readonly("simplices", [](py::object self) {
+        const auto& t = self.cast<const Triangulated&>();
+        return table_view(t.result.simplices, static_cast<std::size_t>(t.result.dim + 1), self);
+      })
+      .def_property_readonly("neighbors", [](py::object self) {
+        const auto& t = self.cast<const Triangulated&>();
+        return table_view(t.result.neighbors, static_cast<std::size_t>(t.result.dim + 1), self);
+      })
+      .def_property_readonly("duplicates", [](const Triangulated& t) {
+        std::vector<std::int64_t> pairs;
+        for (const Duplicate& dup : t.result.duplicates) {
+          pairs.push_back(dup.index);
+          pairs.push_back(dup.original);
+        }
+        return adopt(std::move(pairs), {static_cast<py::ssize_t>(t.result.duplicates.size()), 2});
+      })
+      .def_property_readonly("statistics", [](const Triangulated& t) { return statistics_dict(t.result.stats); })
+      .def("find_simplex", &Triangulated::find_simplex, py::arg("xi"));
+
+  py::class_<Diagram>(m, "Diagram")
+      .def_property_readonly("vertices", [](py::object self) {
+        const auto& v = self.cast<const Diagram&>().result;
+        return table_view(v.vertices, static_cast<std::size_t>(v.dim), self);
+      })
+      .def_property_readonly("simplex_vertex", [](py::object self) {
+        const auto& v = self.cast<const Diagram&>().result;
+        return view(v.simplex_vertex, {static_cast<py::ssize_t>(v.simplex_vertex.size())}, self);
+      })
+      .def_property_readonly("ridge_points", [](py::object self) {
+        return table_view(self.cast<const Diagram&>().result.ridge_points, 2, self);
+      })
+      .def_property_readonly("ridge_offsets", [](py::object self) {
+        const auto& lists = self.cast<const Diagram&>().result.ridge_vertices;
+        return view(lists.offsets, {static_cast<py::ssize_t>(lists.offsets.size())}, self);
+      })
+      .def_property_readonly("ridge_indices", [](py::object self) {
+        const auto& lists = self.cast<const Diagram&>().result.ridge_vertices;
+        return view(lists.values, {static_cast<py::ssize_t>(lists.values.size())}, self);
+      })
+      .def_property_readonly("region_offsets", [](py::object self) {
+        const auto& lists = self.cast<const Diagram&>().result.regions;
+        return view(lists.offsets, {static_cast<py::ssize_t>(lists.offsets.size())}, self);
+      })
+      .def_property_readonly("region_indices", [](py::object self) {
+        const auto& lists = self.cast<const Diagram&>().result.regions;
+        return view(lists.values, {static_cast<py::ssize_t>(lists.values.size())}, self);
+      })
+      .def_property_readonly("point_region", [](py::object self) {
+        const auto& v = self.cast<const Diagram&>().result;
+        return view(v.point_region, {static_cast<py::ssize_t>(v.point_region.size())}, self);
+      })
+      .def_property_readonly("region_point", [](py::object self) {
+        const auto& v = self.cast<const Diagram&>().result;
+        return view(v.region_point, {static_cast<py::ssize_t>(v.region_point.size())}, self);
+      })
+      .def_property_readonly("volumes", [](py::object self) {
+        const auto& v = self.cast<const Diagram&>().result;
+        return view(v.volumes, {static_cast<py::ssize_t>(v.volumes.size())}, self);
+      })
+      .def_property_readonly("statistics", [](const Diagram& d) { return statistics_dict(d.statistics); })
+      .def("clip", [](const Diagram& d, std::vector<double> lower, std::vector<double> upper) {
+        ClippedCells cells;
+        {
+          py::gil_scoped_release release;
+          cells = clip_cells(PointsView(d.points.data(), d.result.num_points, d.result.dim), d.result,
+                             Box{std::move(lower), std::move(upper)});
+        }
+        return clipped_dict(cells);
+      }, py::arg("lower"), py::arg("upper"));
+
+  m.def("triangulate", [](Points points, const std::string& variant, int threads, py::object progress) {
+    const PointsView input = points_view(points, "points");
+    PythonProgress reporter(std::move(progress));
+    const Options options = engine_options(variant, threads, reporter);
+    auto triangulated = std::make_unique<Triangulated>();
+    triangulated->result = reporter.run([&] { return delaunay(input, options); });
+    triangulated->points = std::move(points);
+    return triangulated;
+  }, py::arg("points"), py::arg("variant"), py::arg("threads"), py::arg("progress"));
+
+  m.def("voronoi", [](Points points, const std::string& variant, int threads, bool cell_volumes, py::object progress) {
+    const PointsView input = points_view(points, "points");
+    PythonProgress reporter(std::move(progress));
+    const Options options = engine_options(variant, threads, reporter);
+    auto diagram = std::make_unique<Diagram>();
+    diagram->result = reporter.run([&] {
+      const Triangulation triangulation = delaunay(input, options);
+      diagram->statistics = triangulation.stats;
+      return voronoi(input, triangulation, cell_volumes);
+    });
+    diagram->points = std::move(points);
+    return diagram;
+  }, py::arg("points"), py::arg("variant"), py::arg("threads"), py::arg("cell_volumes"), py::arg("progress"));
+
+  m.def("default_clip_box", [](Points points, double margin) {
+    const Box box = default_clip_box(points_view(points, "points"), margin);
+    return py::make_tuple(py::array_t<double>(static_cast<py::ssize_t>(box.lower.size()), box.lower.data()),
+                          py::array_t<double>(static_cast<py::ssize_t>(box.upper.size()), box.upper.data()));
+  }, py::arg("points"), py::arg("margin"));
+
+  m.def("check_triangulation", [](Points points, py::array_t<std::int32_t, py::array::c_style | py::array::forcecast> simplices,
+                                  std::size_t max_problems) {
+    const PointsView input = points_view(points, "points");
+    if (simplices.ndim() != 2 || simplices.shape(1) != input.dim + 1)
+      throw py::value_error("simplices must be a 2-D array with ndim+1 = " + std::to_string(input.dim + 1) + " columns");
+    const std::vector<std::int32_t> rows(simplices.data(), simplices.data() + simplices.size());
+    CheckReport report;
+    {
+      py::gil_scoped_release release;
+      report = check_triangulation(input, rows, max_problems);
+    }
+    py::dict d;
+    d["valid"] = report.valid;
+    d["problems"] = report.problems;
+    d["problem_count"] = report.problem_count;
+    d["simplices"] = report.simplices;
+    d["interior_facets"] = report.interior_facets;
+    d["boundary_facets"] = report.boundary_facets;
+    return d;
+  }, py::arg("points"), py::arg("simplices"), py::arg("max_problems"));
+
+  m.attr("search_variant_names") = search_variant_names();
+}
+
+}  // namespace drange::python
