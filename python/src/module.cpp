@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,6 +67,7 @@ struct Triangulated {
   Points points;
   Triangulation result;
   std::unique_ptr<SimplexLocator> locator;  // built by the first find_simplex
+  std::once_flag locator_built;             // find_simplex may run in several Python threads at once
 
   py::array_t<std::int32_t> find_simplex(const Points& queries) {
     const PointsView view = points_view(queries, "xi");
@@ -75,7 +77,9 @@ struct Triangulated {
     std::vector<std::int32_t> found(view.n);
     {
       py::gil_scoped_release release;
-      if (!locator) locator = std::make_unique<SimplexLocator>(PointsView(points.data(), result.num_points, result.dim), result);
+      std::call_once(locator_built, [&] {
+        locator = std::make_unique<SimplexLocator>(PointsView(points.data(), result.num_points, result.dim), result);
+      });
       locator->find(view, found.data());
     }
     return adopt(std::move(found), {static_cast<py::ssize_t>(view.n)});
