@@ -4,10 +4,10 @@ from functools import cached_property
 import numpy as np
 
 from . import _drange
-from ._points import as_points, check_options, check_scipy_arguments
+from ._points import PointSetAttributes, as_points, check_options, check_scipy_arguments
 
 
-class Delaunay:
+class Delaunay(PointSetAttributes):
     """Delaunay triangulation in N >= 2 dimensions, exact.
 
     Parameters
@@ -56,11 +56,7 @@ class Delaunay:
         self.paraboloid_scale = 1.0
         self.paraboloid_shift = 0.0
 
-    npoints = property(lambda self: self.points.shape[0], doc="Number of input points.")
-    ndim = property(lambda self: self.points.shape[1], doc="Dimension of the space.")
     nsimplex = property(lambda self: self.simplices.shape[0], doc="Number of simplices.")
-    min_bound = property(lambda self: self.points.min(axis=0), doc="Minimum of the points' coordinates.")
-    max_bound = property(lambda self: self.points.max(axis=0), doc="Maximum of the points' coordinates.")
 
     @cached_property
     def vertex_to_simplex(self):
@@ -167,9 +163,6 @@ class Delaunay:
             raise ValueError(f"wrong dimensionality in xi: shape {xi.shape}, expected (..., {self.ndim})")
         found = self._core.find_simplex(np.ascontiguousarray(xi.reshape(-1, self.ndim)))
         return found.reshape(xi.shape[:-1])
-
-    def close(self):
-        """scipy's method; drange keeps no Qhull state, so there is nothing to release."""
 
     def __repr__(self):
         return f"<drange.Delaunay: {self.npoints} points in {self.ndim}D, {self.nsimplex} simplices>"

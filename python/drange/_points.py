@@ -6,10 +6,10 @@ from . import _drange
 
 def as_points(points):
     """The points as a C-contiguous float64 array of shape (npoints, ndim); copies only if needed."""
-    array = np.ascontiguousarray(points, dtype=np.float64)
+    array = np.asarray(points, dtype=np.float64)
     if array.ndim != 2:
         raise ValueError(f"points must be a 2-D array of shape (npoints, ndim); got shape {array.shape}")
-    return array
+    return np.ascontiguousarray(array)
 
 
 def check_scipy_arguments(furthest_site, incremental, qhull_options):
@@ -30,3 +30,15 @@ def check_options(variant, threads):
         raise TypeError(f"variant must be a string, one of {names}; got {type(variant).__name__}")
     if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)):
         raise TypeError(f"threads must be an integer; got {type(threads).__name__}")
+
+
+class PointSetAttributes:
+    """scipy's attributes that depend on the points alone (`self.points` set by the subclass)."""
+
+    npoints = property(lambda self: self.points.shape[0], doc="Number of input points.")
+    ndim = property(lambda self: self.points.shape[1], doc="Dimension of the space.")
+    min_bound = property(lambda self: self.points.min(axis=0), doc="Minimum of the points' coordinates.")
+    max_bound = property(lambda self: self.points.max(axis=0), doc="Maximum of the points' coordinates.")
+
+    def close(self):
+        """scipy's method; drange keeps no Qhull state, so there is nothing to release."""

@@ -4,7 +4,7 @@ from functools import cached_property
 import numpy as np
 
 from . import _drange
-from ._points import as_points, check_options, check_scipy_arguments
+from ._points import PointSetAttributes, as_points, check_options, check_scipy_arguments
 
 
 def _rows(offsets, values):
@@ -14,7 +14,7 @@ def _rows(offsets, values):
     return [flat[bounds[r]:bounds[r + 1]] for r in range(len(bounds) - 1)]
 
 
-class Voronoi:
+class Voronoi(PointSetAttributes):
     """Voronoi diagram in N >= 2 dimensions, read off the exact Delaunay triangulation.
 
     Parameters are scipy's (see drange.Delaunay for furthest_site, incremental,
@@ -62,10 +62,6 @@ class Voronoi:
         volumes = self._core.volumes
         self.volumes = volumes if len(volumes) == len(self.region_point) else np.full(len(self.region_point), np.nan)
 
-    npoints = property(lambda self: self.points.shape[0], doc="Number of input points.")
-    ndim = property(lambda self: self.points.shape[1], doc="Dimension of the space.")
-    min_bound = property(lambda self: self.points.min(axis=0), doc="Minimum of the points' coordinates.")
-    max_bound = property(lambda self: self.points.max(axis=0), doc="Maximum of the points' coordinates.")
 
     @cached_property
     def ridge_vertices(self):
@@ -91,9 +87,6 @@ class Voronoi:
         else:
             lower, upper = (np.asarray(b, dtype=np.float64).ravel() for b in box)
         return ClippedCells(self._core.clip(lower.tolist(), upper.tolist()), self.ndim, self.region_point)
-
-    def close(self):
-        """scipy's method; nothing to release."""
 
     def __repr__(self):
         return (f"<drange.Voronoi: {self.npoints} points in {self.ndim}D, {len(self.vertices)} vertices, "

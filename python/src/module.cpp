@@ -92,6 +92,24 @@ struct Diagram {
   Statistics statistics;
 };
 
+// A property getter: the diagram's vector `member` as a 1-D view.
+template <class T>
+auto diagram_array(std::vector<T> Voronoi::*member) {
+  return [member](py::object self) {
+    const std::vector<T>& data = self.cast<const Diagram&>().result.*member;
+    return view(data, {static_cast<py::ssize_t>(data.size())}, self);
+  };
+}
+
+// A property getter: one part (offsets or values) of the diagram's ragged lists `lists`.
+template <class T>
+auto diagram_lists(IndexLists Voronoi::*lists, std::vector<T> IndexLists::*part) {
+  return [lists, part](py::object self) {
+    const std::vector<T>& data = self.cast<const Diagram&>().result.*lists.*part;
+    return view(data, {static_cast<py::ssize_t>(data.size())}, self);
+  };
+}
+
 py::dict clipped_dict(const ClippedCells& cells) {
   py::dict d;
   const auto dim = static_cast<py::ssize_t>(cells.dim);
@@ -162,41 +180,17 @@ PYBIND11_MODULE(_drange, m) {
         const auto& v = self.cast<const Diagram&>().result;
         return table_view(v.vertices, static_cast<std::size_t>(v.dim), self);
       })
-      .def_property_readonly("simplex_vertex", [](py::object self) {
-        const auto& v = self.cast<const Diagram&>().result;
-        return view(v.simplex_vertex, {static_cast<py::ssize_t>(v.simplex_vertex.size())}, self);
-      })
       .def_property_readonly("ridge_points", [](py::object self) {
         return table_view(self.cast<const Diagram&>().result.ridge_points, 2, self);
       })
-      .def_property_readonly("ridge_offsets", [](py::object self) {
-        const auto& lists = self.cast<const Diagram&>().result.ridge_vertices;
-        return view(lists.offsets, {static_cast<py::ssize_t>(lists.offsets.size())}, self);
-      })
-      .def_property_readonly("ridge_indices", [](py::object self) {
-        const auto& lists = self.cast<const Diagram&>().result.ridge_vertices;
-        return view(lists.values, {static_cast<py::ssize_t>(lists.values.size())}, self);
-      })
-      .def_property_readonly("region_offsets", [](py::object self) {
-        const auto& lists = self.cast<const Diagram&>().result.regions;
-        return view(lists.offsets, {static_cast<py::ssize_t>(lists.offsets.size())}, self);
-      })
-      .def_property_readonly("region_indices", [](py::object self) {
-        const auto& lists = self.cast<const Diagram&>().result.regions;
-        return view(lists.values, {static_cast<py::ssize_t>(lists.values.size())}, self);
-      })
-      .def_property_readonly("point_region", [](py::object self) {
-        const auto& v = self.cast<const Diagram&>().result;
-        return view(v.point_region, {static_cast<py::ssize_t>(v.point_region.size())}, self);
-      })
-      .def_property_readonly("region_point", [](py::object self) {
-        const auto& v = self.cast<const Diagram&>().result;
-        return view(v.region_point, {static_cast<py::ssize_t>(v.region_point.size())}, self);
-      })
-      .def_property_readonly("volumes", [](py::object self) {
-        const auto& v = self.cast<const Diagram&>().result;
-        return view(v.volumes, {static_cast<py::ssize_t>(v.volumes.size())}, self);
-      })
+      .def_property_readonly("simplex_vertex", diagram_array(&Voronoi::simplex_vertex))
+      .def_property_readonly("point_region", diagram_array(&Voronoi::point_region))
+      .def_property_readonly("region_point", diagram_array(&Voronoi::region_point))
+      .def_property_readonly("volumes", diagram_array(&Voronoi::volumes))
+      .def_property_readonly("ridge_offsets", diagram_lists(&Voronoi::ridge_vertices, &IndexLists::offsets))
+      .def_property_readonly("ridge_indices", diagram_lists(&Voronoi::ridge_vertices, &IndexLists::values))
+      .def_property_readonly("region_offsets", diagram_lists(&Voronoi::regions, &IndexLists::offsets))
+      .def_property_readonly("region_indices", diagram_lists(&Voronoi::regions, &IndexLists::values))
       .def_property_readonly("statistics", [](const Diagram& d) { return statistics_dict(d.statistics); })
       .def("clip", [](const Diagram& d, std::vector<double> lower, std::vector<double> upper) {
         ClippedCells cells;

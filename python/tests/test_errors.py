@@ -17,6 +17,7 @@ def test_exception_hierarchy():
     ([[0.0, np.nan], [1, 0], [0, 1]], "point 0, coordinate 1 is NaN"),
     ([[0.0, 0], [np.inf, 0], [0, 1]], "point 1, coordinate 0 is infinite"),
     ([0.0, 1.0, 2.0], r"2-D array of shape \(npoints, ndim\); got shape \(3,\)"),
+    (None, r"got shape \(\)"),
     (np.zeros((2, 2, 2)), r"got shape \(2, 2, 2\)"),
     ([[0.0], [1.0]], "dimension 1"),
     (np.eye(13), "dimension 13"),
