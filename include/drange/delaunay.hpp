@@ -14,14 +14,24 @@
 namespace drange {
 
 // How the next simplex of an open facet is searched (paper, section 2.4). The defaults are
-// the full algorithm; the switches exist so that the gain of each step can be measured.
+// the full algorithm; the switches exist so that the gain of each step can be measured. The
+// first three are the paper's; the last two are ours (they change the order in which points
+// are met, never which point is found).
 struct SearchOptions {
   bool use_kdtree = true;               // false: scan every point for every facet (the slow direct algorithm)
   bool prune_closed_side = true;        // 2.4.1: skip kd-tree nodes wholly on the closed side of the facet
   bool visit_facet_child_first = true;  // 2.4.2: descend first into the child that holds the facet
+  // Walk the kd-tree bottom-up from the leaf of the facet's first vertex, climbing only until
+  // the query box lies inside the subtree walked so far, instead of descending from the root.
+  bool bottom_up = true;
+  // Before the walk, try as candidates the points found by the last searches of facets that
+  // share a vertex with this one (Delaunay neighbours of its vertices): the first query box is
+  // then already small.
+  bool seed_candidate = true;
 };
 
-// Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order".
+// Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order",
+// "paper" (the paper's three steps and nothing else), "no-bottom-up".
 // Throws UsageError naming the unknown value.
 SearchOptions search_variant(const std::string& name);
 // The names accepted by search_variant, for help texts.

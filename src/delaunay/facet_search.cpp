@@ -35,7 +35,9 @@ FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options)
       centre_(static_cast<std::size_t>(d_)),
       lower_(static_cast<std::size_t>(d_)),
       upper_(static_cast<std::size_t>(d_)),
-      row_(static_cast<std::size_t>(d_ + 1)) {}
+      row_(static_cast<std::size_t>(d_ + 1)) {
+  if (options_.seed_candidate) recent_.assign(static_cast<std::size_t>(points.size) * kSeeds, -1);
+}
 
 void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
   facet_ = facet;
@@ -183,9 +185,11 @@ void FacetSearch::consider(std::int32_t id) {
   const double* x = points_.point(id);
   for (int k = 0; k < d_; ++k)
     if (x[k] < lower_[static_cast<std::size_t>(k)] || x[k] > upper_[static_cast<std::size_t>(k)]) return;
-  // The facet's own vertices lie on its hyperplane (O = 0 exactly, which no filter certifies).
+  // The facet's own vertices lie on its hyperplane (O = 0 exactly, which no filter certifies);
+  // the candidate may be met again after being tried as a seed (I(p, p) = 0 likewise).
   for (int i = 0; i < d_; ++i)
     if (facet_[i] == id) return;
+  if (id == candidate_) return;
   ++counters_->points_tested;
   double lift = 0.0;
   for (int k = 0; k < d_; ++k) {
@@ -218,11 +222,27 @@ std::int32_t FacetSearch::find_apex(const std::int32_t* facet, int sigma, Search
   set_facet(facet, sigma);
   candidate_ = -1;
   reset_box();
-  if (options_.use_kdtree) {
+  if (options_.seed_candidate) {
+    for (int i = 0; i < d_; ++i) {
+      const std::int32_t* seeds = &recent_[static_cast<std::size_t>(facet[i]) * kSeeds];
+      for (int k = 0; k < kSeeds; ++k)
+        if (seeds[k] >= 0) consider(seeds[k]);
+    }
+  }
+  if (options_.use_kdtree && options_.bottom_up) {
+    counters.calls += points_.tree.search_from(*this, points_.tree.leaf_of(facet[0]));
+  } else if (options_.use_kdtree) {
     counters.calls += points_.tree.search(*this);
   } else {
     ++counters.calls;
     for (std::int32_t id = 0; id < points_.size; ++id) consider(id);
+  }
+  if (options_.seed_candidate && candidate_ >= 0) {
+    for (int i = 0; i < d_; ++i) {
+      std::int32_t* seeds = &recent_[static_cast<std::size_t>(facet[i]) * kSeeds];
+      for (int k = kSeeds - 1; k > 0; --k) seeds[k] = seeds[k - 1];
+      seeds[0] = candidate_;
+    }
   }
   return candidate_;
 }

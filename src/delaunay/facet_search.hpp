@@ -94,6 +94,10 @@ class FacetSearch {
 
   // Per point (scratch).
   std::vector<double> row_;
+  // Seeds: for each point, the apexes of the last kSeeds searches whose facet held it (Delaunay
+  // neighbours of the point, -1 when none yet); tried before the walk.
+  static constexpr int kSeeds = 2;
+  std::vector<std::int32_t> recent_;
   SearchCounters* counters_ = nullptr;
 };
 
