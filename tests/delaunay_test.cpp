@@ -325,7 +325,7 @@ TEST(DelaunayVariants, EveryVariantGivesTheSameTriangulation) {
                                           drange::generate_points(Distribution::Gaussian, 300, 4, 22)};
   for (const PointCloud& points : inputs) {
     const auto reference = canonical(drange::delaunay(points));
-    for (const char* name : {"scan", "kdtree", "no-prune", "no-order", "paper", "no-bottom-up", "no-seed"}) {
+    for (const char* name : {"scan", "kdtree", "no-prune", "no-order", "paper", "no-bottom-up", "no-seed", "no-ball"}) {
       drange::Options options;
       options.search = drange::search_variant(name);
       const Triangulation t = drange::delaunay(points, options);
@@ -336,8 +336,8 @@ TEST(DelaunayVariants, EveryVariantGivesTheSameTriangulation) {
   EXPECT_THROW(drange::search_variant("fast"), drange::UsageError);
 }
 
-// The bottom-up walk and the seeds change the order in which points are met, never the
-// point found: on the degenerate families, where ties are decided by the perturbation and
+// The bottom-up walk, the seeds and the ball query change the order in which points are met,
+// or skip points that cannot win, never the point found: on the degenerate families, where ties are decided by the perturbation and
 // many points sit exactly on query boxes and spheres, every switch gives the same simplices.
 TEST(DelaunayVariants, BottomUpAndSeedsChangeNothingOnDegenerateInputs) {
   std::vector<std::pair<std::string, PointCloud>> cases = {
@@ -364,7 +364,7 @@ TEST(DelaunayVariants, BottomUpAndSeedsChangeNothingOnDegenerateInputs) {
   }
   for (const auto& [name, points] : cases) {
     const auto reference = canonical(drange::delaunay(points));
-    for (const char* variant : {"paper", "no-bottom-up", "no-seed", "scan"}) {
+    for (const char* variant : {"paper", "no-bottom-up", "no-seed", "no-ball", "scan"}) {
       drange::Options options;
       options.search = drange::search_variant(variant);
       EXPECT_EQ(canonical(drange::delaunay(points, options)), reference) << name << ", " << variant;
@@ -372,7 +372,7 @@ TEST(DelaunayVariants, BottomUpAndSeedsChangeNothingOnDegenerateInputs) {
   }
 }
 
-TEST(DelaunayVariants, BottomUpAndSeedsReduceTheWork) {
+TEST(DelaunayVariants, BottomUpSeedsAndBallReduceTheWork) {
   for (int d : {2, 3}) {
     const PointCloud points = drange::generate_points(Distribution::Uniform, d == 2 ? 20000 : 5000, d, 24);
     auto stats = [&](const char* name) {
@@ -388,6 +388,8 @@ TEST(DelaunayVariants, BottomUpAndSeedsReduceTheWork) {
     // The seeds start the search with a good candidate: fewer improvements, fewer points tested.
     EXPECT_LT(full.candidates, no_seed.candidates) << "d=" << d;
     EXPECT_LT(full.points_tested, no_seed.points_tested) << "d=" << d;
+    // The ball skips the corners of its bounding box: fewer points tested.
+    EXPECT_LT(full.points_tested, stats("no-ball").points_tested) << "d=" << d;
   }
 }
 

@@ -28,10 +28,13 @@ struct SearchOptions {
   // share a vertex with this one (Delaunay neighbours of its vertices): the first query box is
   // then already small.
   bool seed_candidate = true;
+  // Query the candidate's ball itself (enlarged by its error bound), not only its bounding box
+  // (2.4 approximates the sphere by a hypercube, "the rougher the larger d is").
+  bool ball_query = true;
 };
 
 // Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order",
-// "paper" (the paper's three steps and nothing else), "no-bottom-up".
+// "paper" (the paper's three steps and nothing else), "no-bottom-up", "no-seed", "no-ball".
 // Throws UsageError naming the unknown value.
 SearchOptions search_variant(const std::string& name);
 // The names accepted by search_variant, for help texts.
@@ -63,7 +66,7 @@ struct Statistics {
   std::size_t simplices = 0;
   std::size_t hull_facets = 0;       // facets whose search found nothing: the convex hull
   std::size_t search_calls = 0;      // kd-tree nodes entered by all searches (the paper's "Calls" numerator)
-  std::size_t points_tested = 0;     // points inside a query box, tested against the candidate sphere
+  std::size_t points_tested = 0;     // points inside a query box (or ball), tested against the candidate sphere
   std::size_t candidates = 0;        // times a search's candidate point was set or improved
   std::size_t exact_fallbacks = 0;   // decisions the floating-point filter could not take
   std::size_t max_open_facets = 0;   // the largest frontier held in the facet table

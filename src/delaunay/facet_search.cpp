@@ -37,6 +37,11 @@ FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options)
       upper_(static_cast<std::size_t>(d_)),
       row_(static_cast<std::size_t>(d_ + 1)) {
   if (options_.seed_candidate) recent_.assign(static_cast<std::size_t>(points.size) * kSeeds, -1);
+  if (points_.dyadic) {
+    for (int size = 0; size <= d_; ++size)
+      exact_limits_[static_cast<std::size_t>(size)] = std::ldexp(1.0, 52 + points_.unit_exponent * size);
+    orient_exact_limit_ = exact_limits_[static_cast<std::size_t>(d_)];
+  }
 }
 
 void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
@@ -70,10 +75,8 @@ void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
   orientation_exact_ = points_.dyadic && facet_clean_;
   for (std::uint32_t mask = 1; orientation_exact_ && mask <= spatial; ++mask) {
     const int size = __builtin_popcount(mask);
-    if (size < d_ && !(minors_.abs_minor(mask) < std::ldexp(1.0, 52 + points_.unit_exponent * size)))
-      orientation_exact_ = false;
+    if (size < d_ && !(minors_.abs_minor(mask) < exact_limits_[static_cast<std::size_t>(size)])) orientation_exact_ = false;
   }
-  orient_exact_limit_ = std::ldexp(1.0, 52 + points_.unit_exponent * d_);
   for (int j = 0; j < d_; ++j) {
     const double sign = ((d_ - 1 + j) & 1) ? -1.0 : 1.0;
     a_[static_cast<std::size_t>(j)] = sigma * sign * minors_.minor(spatial & ~bit(j));
@@ -85,6 +88,7 @@ void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
 void FacetSearch::reset_box() {
   std::fill(lower_.begin(), lower_.end(), -kInfinity);
   std::fill(upper_.begin(), upper_.end(), kInfinity);
+  ball_ = false;
 }
 
 void FacetSearch::set_candidate(std::int32_t id) {
@@ -141,6 +145,13 @@ void FacetSearch::set_candidate(std::int32_t id) {
     lower_[static_cast<std::size_t>(k)] = centre_[static_cast<std::size_t>(k)] - reach;
     upper_[static_cast<std::size_t>(k)] = centre_[static_cast<std::size_t>(k)] + reach;
   }
+  // The ball of radius reach about the computed centre holds the sphere. A squared distance
+  // computed in floating point is within a relative (d + 2) u of the true one (differences,
+  // squares and a sum of positive terms; an underflowing term only makes it smaller), so
+  // comparing with reach^2 (1 + 1e-10) never drops a point of the ball. Far below 1 (the
+  // points are scaled to magnitudes near 1), reach^2 itself could underflow: no ball then.
+  ball_ = options_.ball_query && reach > 0x1p-400;
+  ball_reach2_ = reach * reach * (1 + 1e-10);
 }
 
 int FacetSearch::orientation_sign(double value, double abs_tree) const {
@@ -183,8 +194,17 @@ bool FacetSearch::beats_candidate(std::int32_t id) {
 
 void FacetSearch::consider(std::int32_t id) {
   const double* x = points_.point(id);
-  for (int k = 0; k < d_; ++k)
-    if (x[k] < lower_[static_cast<std::size_t>(k)] || x[k] > upper_[static_cast<std::size_t>(k)]) return;
+  if (ball_) {
+    double distance2 = 0.0;
+    for (int k = 0; k < d_; ++k) {
+      const double delta = x[k] - centre_[static_cast<std::size_t>(k)];
+      distance2 += delta * delta;
+    }
+    if (distance2 > ball_reach2_) return;
+  } else {
+    for (int k = 0; k < d_; ++k)
+      if (x[k] < lower_[static_cast<std::size_t>(k)] || x[k] > upper_[static_cast<std::size_t>(k)]) return;
+  }
   // The facet's own vertices lie on its hyperplane (O = 0 exactly, which no filter certifies);
   // the candidate may be met again after being tried as a seed (I(p, p) = 0 likewise).
   for (int i = 0; i < d_; ++i)
@@ -203,10 +223,19 @@ void FacetSearch::consider(std::int32_t id) {
 }
 
 bool FacetSearch::prune(std::int32_t node) const {
-  if (!options_.prune_closed_side || !facet_clean_) return false;
-  // The largest value of sigma O over the node's box, at the corner that maximises each term.
   const double* lo = points_.tree.lower(node);
   const double* hi = points_.tree.upper(node);
+  if (ball_) {  // the node's box misses the ball (the walk only checked the ball's bounding box)
+    double distance2 = 0.0;
+    for (int k = 0; k < d_; ++k) {
+      const double c = centre_[static_cast<std::size_t>(k)];
+      const double delta = c < lo[k] ? lo[k] - c : (c > hi[k] ? c - hi[k] : 0.0);
+      distance2 += delta * delta;
+    }
+    if (distance2 > ball_reach2_) return true;
+  }
+  if (!options_.prune_closed_side || !facet_clean_) return false;
+  // The largest value of sigma O over the node's box, at the corner that maximises each term.
   double m = 0.0, m_abs = 0.0;
   for (int k = 0; k < d_; ++k) {
     const double a = a_[static_cast<std::size_t>(k)];

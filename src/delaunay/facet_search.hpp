@@ -18,6 +18,7 @@
 // and the simplex already found there has an empty sphere.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -28,8 +29,8 @@
 namespace drange::engine {
 
 struct SearchCounters {
-  std::uint64_t calls = 0;          // kd-tree nodes entered
-  std::uint64_t points_tested = 0;  // points inside the query box that were tested
+  std::uint64_t calls = 0;          // kd-tree nodes entered (their box meets the query box)
+  std::uint64_t points_tested = 0;  // points inside the query box (or ball) that were tested
   std::uint64_t candidates = 0;     // improvements of the candidate
 };
 
@@ -82,6 +83,7 @@ class FacetSearch {
   // is below orient_exact_limit_ (dyadic points, see set_facet).
   bool orientation_exact_ = false;
   double orient_exact_limit_ = 0.0;
+  std::array<double, 13> exact_limits_{};  // 2^(52 + unit_exponent * size), size = 0..d (dyadic points)
   std::vector<double> centroid_;
   std::vector<const double*> rows_;  // f_1, ..., f_{d-1}, p, q for the exact predicates
   std::vector<std::int64_t> ranks_;  // ranks of f_0, ..., f_{d-1}, p, q
@@ -91,6 +93,8 @@ class FacetSearch {
   std::vector<double> w_, w_abs_;    // sigma I(p, x) = w . r_x, and its absolute tree
   std::vector<double> centre_;       // of the sphere through F and p
   std::vector<double> lower_, upper_;  // the query box
+  bool ball_ = false;                  // also query the ball: |x - centre|^2 <= ball_reach2_
+  double ball_reach2_ = 0.0;
 
   // Per point (scratch).
   std::vector<double> row_;

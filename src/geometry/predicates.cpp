@@ -3,6 +3,7 @@
 #include "geometry/predicates.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -45,7 +46,9 @@ int common_unit_exponent(int dim, const double* base, const double* const* point
 // sum and product of the expansion is bounded by the absolute-value tree of its minor. So if
 // every minor's absolute tree is below 2^53 of its unit, no operation rounded: the value is
 // exact, zero included. This is what decides the ties of integer grids without GMP.
-bool evaluation_is_exact(const MinorTable& minors, int n, int lift_column, int unit) {
+template <class UnitOf>
+bool evaluation_is_exact(const MinorTable& minors, int n, int lift_column, UnitOf unit_of) {
+  const int unit = unit_of();
   if (unit == std::numeric_limits<int>::max()) return true;  // all coordinates zero
   for (std::uint32_t mask = 1; mask < (std::uint32_t{1} << n); ++mask) {
     const bool lift = lift_column >= 0 && (mask >> lift_column & 1u);
@@ -57,12 +60,14 @@ bool evaluation_is_exact(const MinorTable& minors, int n, int lift_column, int u
 }
 
 // The filter: the sign of the determinant of the rows built by `fill_row` when the error bound
-// certifies it, or when the evaluation provably did not round; nullopt otherwise.
-template <class FillRow>
-std::optional<int> filtered_sign(int n, int entry_roundings, int lift_column, int unit, FillRow fill_row) {
+// certifies it, or when the evaluation provably did not round; nullopt otherwise. `unit_of`
+// gives the common unit exponent of the points (common_unit_exponent), needed only when the
+// error bound does not decide.
+template <class FillRow, class UnitOf>
+std::optional<int> filtered_sign(int n, int entry_roundings, int lift_column, UnitOf unit_of, FillRow fill_row) {
   if (n > SubsetTable::kMaxColumns) return std::nullopt;
   MinorTable minors(n);
-  std::vector<double> row(static_cast<std::size_t>(n));
+  std::array<double, SubsetTable::kMaxColumns> row;
   const FloatingPointWatch watch;
   for (int r = 0; r < n; ++r) {
     fill_row(r, row.data());
@@ -75,7 +80,7 @@ std::optional<int> filtered_sign(int n, int entry_roundings, int lift_column, in
   const double value = minors.minor(all);
   const int s = certified_sign(value, minors.abs_minor(all), laplace_roundings(n, entry_roundings));
   if (s != 0) return s;
-  if (evaluation_is_exact(minors, n, lift_column, unit)) return (value > 0) - (value < 0);
+  if (evaluation_is_exact(minors, n, lift_column, unit_of)) return (value > 0) - (value < 0);
   return std::nullopt;
 }
 
@@ -120,7 +125,7 @@ int exact_lifted_sign(const Frame& f, const double* const* points) {
 }  // namespace
 
 int orientation(const Frame& f, const double* const* points) {
-  const int unit = common_unit_exponent(f.dim, f.base, points, f.k);
+  const auto unit = [&] { return common_unit_exponent(f.dim, f.base, points, f.k); };
   const std::optional<int> s = filtered_sign(f.k, 1, -1, unit, [&](int r, double* row) {
     for (int c = 0; c < f.k; ++c) row[c] = points[r][f.axis(c)] - f.base[f.axis(c)];
   });
@@ -128,7 +133,7 @@ int orientation(const Frame& f, const double* const* points) {
 }
 
 int lifted_sign(const Frame& f, const double* const* points) {
-  const int unit = common_unit_exponent(f.dim, f.base, points, f.k + 1);
+  const auto unit = [&] { return common_unit_exponent(f.dim, f.base, points, f.k + 1); };
   const std::optional<int> s = filtered_sign(f.k + 1, lifted_entry_roundings(f.dim), f.k, unit, [&](int r, double* row) {
     for (int c = 0; c < f.k; ++c) row[c] = points[r][f.axis(c)] - f.base[f.axis(c)];
     row[f.k] = squared_distance(f.dim, points[r], f.base);
