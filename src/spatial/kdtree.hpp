@@ -49,40 +49,44 @@ class KdTree {
   //   bool prune(std::int32_t node)                 true: skip the node and its subtree
   //   bool right_first(const Node& node)            which child to enter first
   //   void leaf(std::int32_t begin, std::int32_t end)  scan the points of a leaf
-  // Returns the number of nodes entered (the search's recursive "calls").
-  template <class Visitor>
+  // Returns the number of nodes entered (the search's recursive "calls"). D > 0: the caller
+  // promises dim() == D, and the box tests are compiled for that dimension.
+  template <int D = 0, class Visitor>
   std::uint64_t search(Visitor& visitor) const {
-    return nodes_.empty() ? 0 : walk(visitor, 0);
+    return nodes_.empty() ? 0 : walk<D>(visitor, 0);
   }
   // The same set of points (every point in the final query box that no prune excluded), found
   // bottom-up from the leaf `leaf` (leaf_of(id) of a point near the expected answer).
-  template <class Visitor>
+  template <int D = 0, class Visitor>
   std::uint64_t search_from(Visitor& visitor, std::int32_t leaf) const;
 
  private:
   std::int32_t build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent);
   // The top-down walk of the subtree rooted at `root`.
-  template <class Visitor>
+  template <int D, class Visitor>
   std::uint64_t walk(Visitor& visitor, std::int32_t root) const;
+  template <int D>
+  int dimension() const { return D > 0 ? D : dim_; }
+  template <int D>
+  bool meets(std::int32_t node, const double* lo, const double* hi) const {
+    const double* a = lower(node);
+    const double* b = upper(node);
+    for (int k = 0; k < dimension<D>(); ++k)
+      if (b[k] < lo[k] || a[k] > hi[k]) return false;
+    return true;
+  }
   // True when the query box lies in the open interior of the node's box. A point outside the
   // node's subtree is separated from it by the split of their lowest common ancestor: on that
   // axis it is >= the largest (or <= the smallest) coordinate of the node's box, so it is not
   // in the interior, and hence not in the query box.
+  template <int D>
   bool contains_strictly(std::int32_t node, const double* lo, const double* hi) const {
     const double* a = lower(node);
     const double* b = upper(node);
-    for (int k = 0; k < dim_; ++k)
+    for (int k = 0; k < dimension<D>(); ++k)
       if (!(a[k] < lo[k] && hi[k] < b[k])) return false;
     return true;
   }
-  bool meets(std::int32_t node, const double* lo, const double* hi) const {
-    const double* a = lower(node);
-    const double* b = upper(node);
-    for (int k = 0; k < dim_; ++k)
-      if (b[k] < lo[k] || a[k] > hi[k]) return false;
-    return true;
-  }
-
   int dim_ = 0;
   std::vector<std::int32_t> order_;
   std::vector<Node> nodes_;
@@ -91,7 +95,7 @@ class KdTree {
   std::vector<std::int32_t> leaf_of_;  // per tree position
 };
 
-template <class Visitor>
+template <int D, class Visitor>
 std::uint64_t KdTree::walk(Visitor& visitor, std::int32_t root) const {
   std::uint64_t calls = 0;
   // An explicit stack: depth is O(log n) for a median-split tree.
@@ -100,7 +104,7 @@ std::uint64_t KdTree::walk(Visitor& visitor, std::int32_t root) const {
   stack[top++] = root;
   while (top > 0) {
     const std::int32_t i = stack[--top];
-    if (!meets(i, visitor.query_lower(), visitor.query_upper())) continue;
+    if (!meets<D>(i, visitor.query_lower(), visitor.query_upper())) continue;
     ++calls;
     if (visitor.prune(i)) continue;
     const Node& node = nodes_[static_cast<std::size_t>(i)];
@@ -120,15 +124,15 @@ std::uint64_t KdTree::walk(Visitor& visitor, std::int32_t root) const {
   return calls;
 }
 
-template <class Visitor>
+template <int D, class Visitor>
 std::uint64_t KdTree::search_from(Visitor& visitor, std::int32_t leaf) const {
   // Invariant at the top of the loop: the subtree of `node` has been walked.
-  std::uint64_t calls = walk(visitor, leaf);
+  std::uint64_t calls = walk<D>(visitor, leaf);
   for (std::int32_t node = leaf; node != 0;) {
-    if (contains_strictly(node, visitor.query_lower(), visitor.query_upper())) break;
+    if (contains_strictly<D>(node, visitor.query_lower(), visitor.query_upper())) break;
     const std::int32_t up = parent_[static_cast<std::size_t>(node)];
     const std::int32_t sibling = node == up + 1 ? nodes_[static_cast<std::size_t>(up)].right : up + 1;
-    calls += walk(visitor, sibling);
+    calls += walk<D>(visitor, sibling);
     node = up;
   }
   return calls;
