@@ -33,6 +33,9 @@ class KdTree {
   // Builds the tree over `n` points of dimension `dim` (row-major `coords`). Returns nothing;
   // order() then gives, for each tree position, the index of the point in `coords`.
   void build(const double* coords, std::int32_t n, int dim, int leaf_size = 8);
+  // The same, then rewrites `coords` in tree order (row i becomes the point order()[i]), for a
+  // caller that renumbers its points (saves it a copy).
+  void build_and_reorder(double* coords, std::int32_t n, int dim, int leaf_size = 8);
 
   const std::vector<std::int32_t>& order() const { return order_; }
   // The leaf that holds tree position `position` (a point id of the caller, after renumbering).
@@ -62,6 +65,14 @@ class KdTree {
 
  private:
   std::int32_t build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent);
+  // The same construction over points copied next to their index (fixed d: no indirection).
+  template <int D>
+  void build_fixed(const double* coords, std::int32_t n, int leaf_size, double* reordered);
+  void build_any(const double* coords, std::int32_t n, int dim, int leaf_size, double* reordered);
+  template <class Item>
+  std::int32_t build_items(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent);
+  // Appends a node (its box to be filled by the caller); returns its index.
+  std::int32_t add_node(std::int32_t begin, std::int32_t end, std::int32_t parent);
   // The top-down walk of the subtree rooted at `root`.
   template <int D, class Visitor>
   std::uint64_t walk(Visitor& visitor, std::int32_t root) const;
