@@ -122,9 +122,49 @@ int exact_lifted_sign(const Frame& f, const double* const* points) {
   return bareiss_sign(a, n);
 }
 
+// Orientation for k <= 3 written out: the sign when a filter certifies it, else 0 (the
+// generic path decides). k = 1: the sign of a difference of doubles is exact in round to
+// nearest. k = 2, 3: the Laplace expansion along the last row, with its absolute-value tree
+// and the same error bound as the generic filter (laplace_roundings(k, 1) over-counts these
+// short expressions), under a watch for underflow.
+int small_orientation(const Frame& f, const double* const* points) {
+  const double* b = f.base;
+  if (f.k == 1) {
+    const double x = points[0][f.axis(0)], y = b[f.axis(0)];
+    return (x > y) - (x < y);
+  }
+  const FloatingPointWatch watch;
+  double value = 0.0, abs_tree = 0.0;
+  if (f.k == 2) {
+    const int x = f.axis(0), y = f.axis(1);
+    const double a00 = points[0][x] - b[x], a01 = points[0][y] - b[y];
+    const double a10 = points[1][x] - b[x], a11 = points[1][y] - b[y];
+    value = a00 * a11 - a01 * a10;
+    abs_tree = std::fabs(a00) * std::fabs(a11) + std::fabs(a01) * std::fabs(a10);
+  } else {
+    const int x = f.axis(0), y = f.axis(1), z = f.axis(2);
+    const double a00 = points[0][x] - b[x], a01 = points[0][y] - b[y], a02 = points[0][z] - b[z];
+    const double a10 = points[1][x] - b[x], a11 = points[1][y] - b[y], a12 = points[1][z] - b[z];
+    const double a20 = points[2][x] - b[x], a21 = points[2][y] - b[y], a22 = points[2][z] - b[z];
+    const double m12 = a01 * a12 - a02 * a11, m02 = a00 * a12 - a02 * a10, m01 = a00 * a11 - a01 * a10;
+    const double n12 = std::fabs(a01) * std::fabs(a12) + std::fabs(a02) * std::fabs(a11);
+    const double n02 = std::fabs(a00) * std::fabs(a12) + std::fabs(a02) * std::fabs(a10);
+    const double n01 = std::fabs(a00) * std::fabs(a11) + std::fabs(a01) * std::fabs(a10);
+    value = a20 * m12 - a21 * m02 + a22 * m01;
+    abs_tree = std::fabs(a20) * n12 + std::fabs(a21) * n02 + std::fabs(a22) * n01;
+  }
+  const int s = certified_sign(value, abs_tree, laplace_roundings(f.k, 1));
+  return watch.clean() ? s : 0;
+}
+
 }  // namespace
 
 int orientation(const Frame& f, const double* const* points) {
+  if (f.k <= 3 && f.k >= 1) {
+    const int s = small_orientation(f, points);
+    if (s != 0) return s;
+    if (f.k == 1) return 0;  // exact
+  }
   const auto unit = [&] { return common_unit_exponent(f.dim, f.base, points, f.k); };
   const std::optional<int> s = filtered_sign(f.k, 1, -1, unit, [&](int r, double* row) {
     for (int c = 0; c < f.k; ++c) row[c] = points[r][f.axis(c)] - f.base[f.axis(c)];
