@@ -9,10 +9,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <deque>
 #include <functional>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "delaunay/facet_search.hpp"
 #include "delaunay/facet_table.hpp"
@@ -54,19 +54,30 @@ class FacetQueue {
     data_.push_back(owner.face);
     data_.push_back(sigma);
   }
-  bool empty() const { return data_.empty(); }
+  bool empty() const { return head_ == data_.size(); }
   void pop(std::int32_t* ids, engine::FacetOwner& owner, int& sigma) {
-    for (int k = 0; k < d_; ++k) ids[k] = data_[static_cast<std::size_t>(k)];
-    owner.simplex = data_[static_cast<std::size_t>(d_)];
-    owner.face = data_[static_cast<std::size_t>(d_ + 1)];
-    sigma = data_[static_cast<std::size_t>(d_ + 2)];
-    data_.erase(data_.begin(), data_.begin() + d_ + 3);
+    const std::int32_t* entry = &data_[head_];
+    for (int k = 0; k < d_; ++k) ids[k] = entry[k];
+    owner.simplex = entry[d_];
+    owner.face = entry[d_ + 1];
+    sigma = entry[d_ + 2];
+    head_ += static_cast<std::size_t>(d_ + 3);
+    // A vector with a moving head: the consumed front is dropped once it is half of the
+    // storage, so the memory stays proportional to the waiting facets (amortised O(1)).
+    if (head_ == data_.size()) {
+      data_.clear();
+      head_ = 0;
+    } else if (head_ >= 4096 && head_ * 2 >= data_.size()) {
+      data_.erase(data_.begin(), data_.begin() + static_cast<std::ptrdiff_t>(head_));
+      head_ = 0;
+    }
   }
-  std::size_t size() const { return data_.size() / static_cast<std::size_t>(d_ + 3); }
+  std::size_t size() const { return (data_.size() - head_) / static_cast<std::size_t>(d_ + 3); }
 
  private:
   int d_;
-  std::deque<std::int32_t> data_;
+  std::vector<std::int32_t> data_;
+  std::size_t head_ = 0;  // the first waiting entry
 };
 
 // Calls Options::progress every kProgressInterval simplices, counting down so that the main
