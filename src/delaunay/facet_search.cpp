@@ -345,7 +345,13 @@ bool SearchKernel<D>::prune(std::int32_t node) const {
     }
     if (distance2 > ball_reach2_) return true;
   }
-  if (!options_.prune_closed_side || !facet_clean_) return false;
+  // Within the candidate's ball, the closed side is a thin cap of its sphere, inside the empty
+  // sphere of the simplex already found there: nodes wholly on the closed side that meet the
+  // ball are rare and hold few points, and testing for them costs more than scanning them
+  // (measured). So the closed side is pruned while there is no ball: before the first
+  // candidate (the box is then unbounded: hull facets depend on it) or without a trustworthy
+  // ball, or without ball queries at all (the paper's search).
+  if (!options_.prune_closed_side || !facet_clean_ || ball_) return false;
   // The largest value of sigma O over the node's box, at the corner that maximises each term
   // (rounding is monotonic: a * dhi >= a * dlo in floating point too when a >= 0).
   double m = 0.0, m_abs = 0.0;
