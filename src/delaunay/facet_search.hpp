@@ -17,6 +17,13 @@
 // (2.4.1) is safe because the spheres through F shrink on that side as the candidate improves,
 // and the simplex already found there has an empty sphere.
 //
+// Our steps (SearchOptions; each changes which points are met, or in which order, never the
+// point found): the walk goes bottom-up from the leaf of f_0 (KdTree::search_from); the
+// apexes of the last searches around the facet's vertices are tried first (seeds), so the
+// first query region is already small; points and nodes are tested against the candidate's
+// ball, not only its bounding box, and once there is a ball the closed side is no longer
+// tested per node (the ball leaves only a thin cap of it).
+//
 // The arithmetic is compiled for d = 2..6 (fixed-size loops) and once for any d; the same
 // template serves all (facet_search.cpp).
 #pragma once
