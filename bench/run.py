@@ -40,11 +40,11 @@ STANDARD = [
 QUICK = [("uniform", 100000, 2), ("grid", 90000, 2), ("uniform", 100000, 3), ("uniform", 10000, 4), ("uniform", 3000, 5)]
 # Ablation: (distribution, n, d, variants).
 ABLATION = [
-    ("uniform", 100000, 2, ["full", "no-prune", "no-order", "kdtree"]),
-    ("uniform", 20000, 2, ["full", "no-prune", "no-order", "kdtree", "scan"]),
-    ("uniform", 20000, 3, ["full", "no-prune", "no-order", "kdtree"]),
+    ("uniform", 100000, 2, ["full", "no-bottom-up", "no-seed", "no-ball", "paper", "no-prune", "no-order", "kdtree"]),
+    ("uniform", 20000, 2, ["full", "paper", "no-prune", "no-order", "kdtree", "scan"]),
+    ("uniform", 20000, 3, ["full", "no-bottom-up", "no-seed", "no-ball", "paper", "no-prune", "no-order", "kdtree"]),
 ]
-QUICK_ABLATION = [("uniform", 20000, 2, ["full", "no-prune", "no-order", "kdtree", "scan"])]
+QUICK_ABLATION = [("uniform", 20000, 2, ["full", "paper", "no-prune", "no-order", "kdtree", "scan"])]
 
 
 def log(*args):

@@ -83,7 +83,8 @@ std::string delaunay_help() {
              "      --variant NAME    the search variant, to measure each optimisation: one of\n"
              "                        ") +
          search_variant_names() +
-         " (default full)\n"
+         "\n"
+         "                        (default full)\n"
          "  -q, --quiet           no progress line, no report of duplicate points\n"
          "  -h, --help            show this text\n"
          "\n"

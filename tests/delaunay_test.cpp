@@ -325,7 +325,7 @@ TEST(DelaunayVariants, EveryVariantGivesTheSameTriangulation) {
                                           drange::generate_points(Distribution::Gaussian, 300, 4, 22)};
   for (const PointCloud& points : inputs) {
     const auto reference = canonical(drange::delaunay(points));
-    for (const char* name : {"scan", "kdtree", "no-prune", "no-order"}) {
+    for (const char* name : {"scan", "kdtree", "no-prune", "no-order", "paper", "no-bottom-up", "no-seed", "no-ball"}) {
       drange::Options options;
       options.search = drange::search_variant(name);
       const Triangulation t = drange::delaunay(points, options);
@@ -334,6 +334,63 @@ TEST(DelaunayVariants, EveryVariantGivesTheSameTriangulation) {
     }
   }
   EXPECT_THROW(drange::search_variant("fast"), drange::UsageError);
+}
+
+// The bottom-up walk, the seeds and the ball query change the order in which points are met,
+// or skip points that cannot win, never the point found: on the degenerate families, where ties are decided by the perturbation and
+// many points sit exactly on query boxes and spheres, every switch gives the same simplices.
+TEST(DelaunayVariants, BottomUpAndSeedsChangeNothingOnDegenerateInputs) {
+  std::vector<std::pair<std::string, PointCloud>> cases = {
+      {"grid 2D 30x30", grid(2, 30)},
+      {"grid 3D 8^3", grid(3, 8)},
+      {"grid 4D 4^4", grid(4, 4)},
+      {"sphere 3D", drange::generate_points(Distribution::Sphere, 400, 3, 31)},
+      {"sphere 2D", drange::generate_points(Distribution::Sphere, 500, 2, 32)},
+  };
+  {
+    // Every integer point of the circle x^2 + y^2 = 5^4 * 13^2 (cospherical, exactly), and its centre.
+    PointCloud c{2, {0, 0}};
+    const long r2 = 625L * 169L;
+    for (long x = -325; x <= 325; ++x)
+      for (long y = -325; y <= 325; ++y)
+        if (x * x + y * y == r2) c.coords.insert(c.coords.end(), {double(x), double(y)});
+    cases.emplace_back("integer circle", c);
+  }
+  {
+    PointCloud c = grid(3, 5);  // duplicates of every third grid point
+    const std::size_t n = c.size();
+    for (std::size_t i = 0; i < n; i += 3) c.coords.insert(c.coords.end(), c.point(i), c.point(i) + 3);
+    cases.emplace_back("grid with duplicates", c);
+  }
+  for (const auto& [name, points] : cases) {
+    const auto reference = canonical(drange::delaunay(points));
+    for (const char* variant : {"paper", "no-bottom-up", "no-seed", "no-ball", "scan"}) {
+      drange::Options options;
+      options.search = drange::search_variant(variant);
+      EXPECT_EQ(canonical(drange::delaunay(points, options)), reference) << name << ", " << variant;
+    }
+  }
+}
+
+TEST(DelaunayVariants, BottomUpSeedsAndBallReduceTheWork) {
+  for (int d : {2, 3}) {
+    const PointCloud points = drange::generate_points(Distribution::Uniform, d == 2 ? 20000 : 5000, d, 24);
+    auto stats = [&](const char* name) {
+      drange::Options options;
+      options.search = drange::search_variant(name);
+      return drange::delaunay(points, options).stats;
+    };
+    const drange::Statistics full = stats("full"), paper = stats("paper"), no_seed = stats("no-seed"),
+                             no_bottom_up = stats("no-bottom-up");
+    // The bottom-up walk enters far fewer nodes: it skips the descent from the root.
+    EXPECT_LT(full.search_calls, no_bottom_up.search_calls) << "d=" << d;
+    EXPECT_LT(no_seed.search_calls, paper.search_calls) << "d=" << d;
+    // The seeds start the search with a good candidate: fewer improvements, fewer points tested.
+    EXPECT_LT(full.candidates, no_seed.candidates) << "d=" << d;
+    EXPECT_LT(full.points_tested, no_seed.points_tested) << "d=" << d;
+    // The ball skips the corners of its bounding box: fewer points tested.
+    EXPECT_LT(full.points_tested, stats("no-ball").points_tested) << "d=" << d;
+  }
 }
 
 TEST(DelaunayVariants, PruningAndOrderingReduceTheWork) {

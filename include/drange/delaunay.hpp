@@ -14,14 +14,27 @@
 namespace drange {
 
 // How the next simplex of an open facet is searched (paper, section 2.4). The defaults are
-// the full algorithm; the switches exist so that the gain of each step can be measured.
+// the full algorithm; the switches exist so that the gain of each step can be measured. The
+// first three are the paper's; the last two are ours (they change the order in which points
+// are met, never which point is found).
 struct SearchOptions {
   bool use_kdtree = true;               // false: scan every point for every facet (the slow direct algorithm)
   bool prune_closed_side = true;        // 2.4.1: skip kd-tree nodes wholly on the closed side of the facet
   bool visit_facet_child_first = true;  // 2.4.2: descend first into the child that holds the facet
+  // Walk the kd-tree bottom-up from the leaf of the facet's first vertex, climbing only until
+  // the query box lies inside the subtree walked so far, instead of descending from the root.
+  bool bottom_up = true;
+  // Before the walk, try as candidates the points found by the last searches of facets that
+  // share a vertex with this one (Delaunay neighbours of its vertices): the first query box is
+  // then already small.
+  bool seed_candidate = true;
+  // Query the candidate's ball itself (enlarged by its error bound), not only its bounding box
+  // (2.4 approximates the sphere by a hypercube, "the rougher the larger d is").
+  bool ball_query = true;
 };
 
-// Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order".
+// Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order",
+// "paper" (the paper's three steps and nothing else), "no-bottom-up", "no-seed", "no-ball".
 // Throws UsageError naming the unknown value.
 SearchOptions search_variant(const std::string& name);
 // The names accepted by search_variant, for help texts.
@@ -53,7 +66,7 @@ struct Statistics {
   std::size_t simplices = 0;
   std::size_t hull_facets = 0;       // facets whose search found nothing: the convex hull
   std::size_t search_calls = 0;      // kd-tree nodes entered by all searches (the paper's "Calls" numerator)
-  std::size_t points_tested = 0;     // points inside a query box, tested against the candidate sphere
+  std::size_t points_tested = 0;     // points inside a query box (or ball), tested against the candidate sphere
   std::size_t candidates = 0;        // times a search's candidate point was set or improved
   std::size_t exact_fallbacks = 0;   // decisions the floating-point filter could not take
   std::size_t max_open_facets = 0;   // the largest frontier held in the facet table

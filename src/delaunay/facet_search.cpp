@@ -1,11 +1,17 @@
 // delaunay/facet_search.cpp: the shrinking kd-tree search for the Delaunay point of a facet.
+//
+// One algorithm, SearchKernel<D>, compiled for D = 2..6 (loops of fixed length, no heap
+// indirection in the hot path) and for D = 0 (any d, read at run time).
 #include "delaunay/facet_search.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "geometry/error_bound.hpp"
+#include "geometry/minors.hpp"
 #include "geometry/predicates.hpp"
 
 namespace drange::engine {
@@ -13,53 +19,150 @@ namespace drange::engine {
 using geometry::certified_sign_with;
 
 namespace {
+
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 inline std::uint32_t bit(int j) { return std::uint32_t{1} << j; }
-}  // namespace
+// d <= 11 (prepare_points.cpp): rows of d + 1 entries, d + 2 ranks.
+constexpr int kMaxRow = 12;
+// Seeds: for each point, the apexes of the last kSeeds searches whose facet held it.
+constexpr int kSeeds = 2;
 
-FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options)
+template <int D>
+class SearchKernel final : public FacetSearch::Kernel {
+ public:
+  SearchKernel(const PointStore& points, const SearchOptions& options);
+  std::int32_t find_apex(const std::int32_t* facet, int sigma, SearchCounters& counters) override;
+
+  // kd-tree visitor interface (spatial/kdtree.hpp).
+  const double* query_lower() const { return lower_.data(); }
+  const double* query_upper() const { return upper_.data(); }
+  bool prune(std::int32_t node) const;
+  bool right_first(const spatial::KdTree::Node& node) const {
+    return options_.visit_facet_child_first && centroid_[static_cast<std::size_t>(node.split_axis)] > node.split_value;
+  }
+  void leaf(std::int32_t begin, std::int32_t end) {
+    for (std::int32_t id = begin; id < end; ++id)
+      if (in_query(points_.point(id))) test(id);
+  }
+
+ private:
+  int dim() const { return D > 0 ? D : d_; }
+  void set_facet(const std::int32_t* facet, int sigma);
+  // Whether x is in the query region (the ball when there is one, else the box): the cheap
+  // test every point of a visited leaf takes, inlined in the leaf scan.
+  bool in_query(const double* x) const {
+    const int d = dim();
+    if (ball_) {
+      double distance2 = 0.0;
+      for (int k = 0; k < d; ++k) {
+        const double delta = x[k] - centre_[static_cast<std::size_t>(k)];
+        distance2 += delta * delta;
+      }
+      return !(distance2 > ball_reach2_);
+    }
+    for (int k = 0; k < d; ++k)
+      if (x[k] < lower_[static_cast<std::size_t>(k)] || x[k] > upper_[static_cast<std::size_t>(k)]) return false;
+    return true;
+  }
+  void consider(std::int32_t id) {
+    if (in_query(points_.point(id))) test(id);
+  }
+  // A point in the query region: is it on the open side, and does it beat the candidate?
+  void test(std::int32_t id);
+  void set_candidate(std::int32_t id);
+  bool on_open_side(std::int32_t id);
+  bool beats_candidate(std::int32_t id);
+  void reset_box();
+  // The sign of sigma O over the computed value, when certified or proved exact; else 0.
+  int orientation_sign(double value, double abs_tree) const;
+
+  const PointStore& points_;
+  SearchOptions options_;
+  int d_;
+  double orient_gamma_;  // error bound factors (error_bound.hpp) of O(x) and I(p, x)
+  double lifted_gamma_;
+  std::array<double, kMaxRow + 1> exact_limits_{};  // 2^(52 + unit_exponent * size), dyadic points
+
+  // Per facet.
+  const std::int32_t* facet_ = nullptr;
+  int sigma_ = 1;
+  const double* f0_ = nullptr;
+  geometry::MinorTable minors_;
+  std::array<double, kMaxRow> a_{}, a_abs_{};  // sigma O(x) = a . (x - f0), and its absolute tree
+  // sigma I(p, x) = w . r_x with w_j = sum_c k_[j][c] (r_p)_c (c != j): the Laplace expansion of
+  // the d-minors along p's row, with their signs and sigma folded in (negation is exact, so w is
+  // the same double as expanding each minor and multiplying by its sign).
+  std::array<std::array<double, kMaxRow>, kMaxRow> k_{}, k_abs_{};
+  // True when no underflow, overflow or invalid operation occurred in the facet's minors (and,
+  // below, in the candidate's): the fast filters and the query box rely on it.
+  bool facet_clean_ = true;
+  bool candidate_clean_ = true;
+  // True when a_ is exact and O(x) is computed without rounding whenever its absolute tree
+  // is below orient_exact_limit_ (dyadic points, see set_facet).
+  bool orientation_exact_ = false;
+  double orient_exact_limit_ = 0.0;
+  std::array<double, kMaxRow> centroid_{};
+  std::array<const double*, kMaxRow> rows_{};  // f_1, ..., f_{d-1}, p, q for the exact predicates
+  std::array<std::int64_t, kMaxRow + 1> ranks_{};  // ranks of f_0, ..., f_{d-1}, p, q
+
+  // Per candidate.
+  std::int32_t candidate_ = -1;
+  std::array<double, kMaxRow> w_{}, w_abs_{};  // sigma I(p, x) = w . r_x, and its absolute tree
+  std::array<double, kMaxRow> centre_{};       // of the sphere through F and p
+  std::array<double, kMaxRow> lower_{}, upper_{};  // the query box
+  bool ball_ = false;                          // also query the ball: |x - centre|^2 <= ball_reach2_
+  double ball_reach2_ = 0.0;
+
+  // Per point (scratch).
+  std::array<double, kMaxRow> row_{};
+  SearchCounters* counters_ = nullptr;
+  // Seeds (SearchOptions::seed_candidate): recent_[id * kSeeds + i], -1 when none yet.
+  std::vector<std::int32_t> recent_;
+};
+
+template <int D>
+SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& options)
     : points_(points),
       options_(options),
       d_(points.dim),
       orient_gamma_(geometry::gamma_bound(geometry::laplace_roundings(points.dim, 1))),
       lifted_gamma_(geometry::gamma_bound(
           geometry::laplace_roundings(points.dim + 1, geometry::lifted_entry_roundings(points.dim)))),
-      minors_(points.dim + 1),
-      a_(static_cast<std::size_t>(d_)),
-      a_abs_(static_cast<std::size_t>(d_)),
-      centroid_(static_cast<std::size_t>(d_)),
-      rows_(static_cast<std::size_t>(d_ + 1)),
-      ranks_(static_cast<std::size_t>(d_ + 2)),
-      w_(static_cast<std::size_t>(d_ + 1)),
-      w_abs_(static_cast<std::size_t>(d_ + 1)),
-      centre_(static_cast<std::size_t>(d_)),
-      lower_(static_cast<std::size_t>(d_)),
-      upper_(static_cast<std::size_t>(d_)),
-      row_(static_cast<std::size_t>(d_ + 1)) {}
+      minors_(points.dim + 1) {
+  if (options_.seed_candidate) recent_.assign(static_cast<std::size_t>(points.size) * kSeeds, -1);
+  if (points_.dyadic) {
+    for (int size = 0; size <= d_; ++size)
+      exact_limits_[static_cast<std::size_t>(size)] = std::ldexp(1.0, 52 + points_.unit_exponent * size);
+    orient_exact_limit_ = exact_limits_[static_cast<std::size_t>(d_)];
+  }
+}
 
-void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
+template <int D>
+void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
+  const int d = dim();
   facet_ = facet;
   sigma_ = sigma;
   f0_ = points_.point(facet[0]);
   ranks_[0] = points_.rank[static_cast<std::size_t>(facet[0])];
-  std::fill(centroid_.begin(), centroid_.end(), 0.0);
+  for (int k = 0; k < d; ++k) centroid_[static_cast<std::size_t>(k)] = 0.0;
   const geometry::FloatingPointWatch watch;
-  for (int i = 0; i < d_; ++i) {
+  for (int i = 0; i < d; ++i) {
     const double* f = points_.point(facet[i]);
-    for (int k = 0; k < d_; ++k) centroid_[static_cast<std::size_t>(k)] += f[k] / d_;
+    for (int k = 0; k < d; ++k) centroid_[static_cast<std::size_t>(k)] += f[k] / d;
     if (i == 0) continue;
     rows_[static_cast<std::size_t>(i - 1)] = f;
     ranks_[static_cast<std::size_t>(i)] = points_.rank[static_cast<std::size_t>(facet[i])];
     double lift = 0.0;
-    for (int k = 0; k < d_; ++k) {
+    for (int k = 0; k < d; ++k) {
       row_[static_cast<std::size_t>(k)] = f[k] - f0_[k];
       lift += row_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
     }
-    row_[static_cast<std::size_t>(d_)] = lift;
+    row_[static_cast<std::size_t>(d)] = lift;
     minors_.set_row(i - 1, row_.data());
   }
+  facet_clean_ = points_.scaled && watch.clean();
   // O(x) = det[f_1 - f_0; ...; x - f_0]: Laplace along the last row over the spatial columns.
-  const std::uint32_t spatial = bit(d_) - 1;
+  const std::uint32_t spatial = bit(d) - 1;
   // Static exactness (as in geometry/predicates.cpp): with dyadic points, every spatial minor
   // of the facet rows is a multiple of unit^size; if each is below 2^52 of that unit, none was
   // rounded, and a later dot product a . (x - f0) is exact when its absolute tree is below
@@ -68,57 +171,73 @@ void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
   orientation_exact_ = points_.dyadic && facet_clean_;
   for (std::uint32_t mask = 1; orientation_exact_ && mask <= spatial; ++mask) {
     const int size = __builtin_popcount(mask);
-    if (size < d_ && !(minors_.abs_minor(mask) < std::ldexp(1.0, 52 + points_.unit_exponent * size)))
-      orientation_exact_ = false;
+    if (size < d && !(minors_.abs_minor(mask) < exact_limits_[static_cast<std::size_t>(size)])) orientation_exact_ = false;
   }
-  orient_exact_limit_ = std::ldexp(1.0, 52 + points_.unit_exponent * d_);
-  for (int j = 0; j < d_; ++j) {
-    const double sign = ((d_ - 1 + j) & 1) ? -1.0 : 1.0;
+  for (int j = 0; j < d; ++j) {
+    const double sign = ((d - 1 + j) & 1) ? -1.0 : 1.0;
     a_[static_cast<std::size_t>(j)] = sigma * sign * minors_.minor(spatial & ~bit(j));
     a_abs_[static_cast<std::size_t>(j)] = minors_.abs_minor(spatial & ~bit(j));
   }
-  facet_clean_ = points_.scaled && watch.clean();
+  // I(p, x) = det[...; r_p; r_x]: Laplace along the last row over all d+1 columns; its
+  // d-minors (all but column j), by Laplace along p's row (row d - 1) over the (d-1)-minors.
+  const std::uint32_t all = bit(d + 1) - 1;
+  for (int j = 0; j <= d; ++j) {
+    const double sign = sigma * (((d + j) & 1) ? -1.0 : 1.0);
+    const std::uint32_t mask = all & ~bit(j);
+    int position = 0;  // of column c within mask: the cofactor sign (-1)^(d - 1 + position)
+    for (int c = 0; c <= d; ++c) {
+      if (c == j) continue;
+      const std::uint32_t sub = mask & ~bit(c);
+      const double cofactor = ((d - 1 + position) & 1) ? -sign : sign;
+      k_[static_cast<std::size_t>(j)][static_cast<std::size_t>(c)] = cofactor * minors_.minor(sub);
+      k_abs_[static_cast<std::size_t>(j)][static_cast<std::size_t>(c)] = minors_.abs_minor(sub);
+      ++position;
+    }
+  }
 }
 
-void FacetSearch::reset_box() {
-  std::fill(lower_.begin(), lower_.end(), -kInfinity);
-  std::fill(upper_.begin(), upper_.end(), kInfinity);
+template <int D>
+void SearchKernel<D>::reset_box() {
+  for (int k = 0; k < dim(); ++k) {
+    lower_[static_cast<std::size_t>(k)] = -kInfinity;
+    upper_[static_cast<std::size_t>(k)] = kInfinity;
+  }
+  ball_ = false;
 }
 
-void FacetSearch::set_candidate(std::int32_t id) {
+template <int D>
+void SearchKernel<D>::set_candidate(std::int32_t id) {
+  const int d = dim();
   candidate_ = id;
   ++counters_->candidates;
   const double* p = points_.point(id);
-  rows_[static_cast<std::size_t>(d_ - 1)] = p;
+  rows_[static_cast<std::size_t>(d - 1)] = p;
   const geometry::FloatingPointWatch watch;
-  ranks_[static_cast<std::size_t>(d_)] = points_.rank[static_cast<std::size_t>(id)];
-  double lift = 0.0;
-  for (int k = 0; k < d_; ++k) {
-    row_[static_cast<std::size_t>(k)] = p[k] - f0_[k];
-    lift += row_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
-  }
-  row_[static_cast<std::size_t>(d_)] = lift;
-  minors_.set_row(d_ - 1, row_.data());
-  // I(p, x) = det[...; r_p; r_x]: Laplace along the last row over all d+1 columns.
-  const std::uint32_t all = bit(d_ + 1) - 1;
-  for (int j = 0; j <= d_; ++j) {
-    const double sign = ((d_ + j) & 1) ? -1.0 : 1.0;
-    w_[static_cast<std::size_t>(j)] = sigma_ * sign * minors_.minor(all & ~bit(j));
-    w_abs_[static_cast<std::size_t>(j)] = minors_.abs_minor(all & ~bit(j));
+  ranks_[static_cast<std::size_t>(d)] = points_.rank[static_cast<std::size_t>(id)];
+  // row_ holds r_p (consider() computed it).
+  for (int j = 0; j <= d; ++j) {
+    double v = 0.0, a = 0.0;
+    for (int c = 0; c <= d; ++c) {
+      if (c == j) continue;
+      v += k_[static_cast<std::size_t>(j)][static_cast<std::size_t>(c)] * row_[static_cast<std::size_t>(c)];
+      a += std::fabs(row_[static_cast<std::size_t>(c)]) * k_abs_[static_cast<std::size_t>(j)][static_cast<std::size_t>(c)];
+    }
+    w_[static_cast<std::size_t>(j)] = v;
+    w_abs_[static_cast<std::size_t>(j)] = a;
   }
   // The sphere through F and p is {x : I(p, x) / O(p) = 0}; I(p, x) / O(p) is the power of x,
   // so its centre is f0 - w_spatial / (2 w_lift) and it passes through f0. The box is the
   // sphere's bounding box, enlarged by the effect of the minors' error bounds on the centre.
   candidate_clean_ = facet_clean_ && watch.clean();
   const double gamma = lifted_gamma_;
-  const double wd = w_[static_cast<std::size_t>(d_)];
-  const double ewd = gamma * w_abs_[static_cast<std::size_t>(d_)];
+  const double wd = w_[static_cast<std::size_t>(d)];
+  const double ewd = gamma * w_abs_[static_cast<std::size_t>(d)];
   if (!candidate_clean_ || !(std::fabs(wd) > 2 * ewd) || !std::isfinite(wd)) {  // no trustworthy box
     reset_box();
     return;
   }
   double radius2 = 0.0, error2 = 0.0, magnitude = 0.0;
-  for (int k = 0; k < d_; ++k) {
+  for (int k = 0; k < d; ++k) {
     const double dc = -w_[static_cast<std::size_t>(k)] / (2 * wd);
     const double err = (gamma * w_abs_[static_cast<std::size_t>(k)] + 2 * std::fabs(dc) * ewd) / (2 * (std::fabs(wd) - ewd));
     centre_[static_cast<std::size_t>(k)] = f0_[k] + dc;
@@ -130,101 +249,170 @@ void FacetSearch::set_candidate(std::int32_t id) {
   // Twice the centre's error (the radius moves by at most as much), plus the roundings of
   // computing the centre, the radius and the box bounds.
   const double reach = radius + 2 * std::sqrt(error2) * (1 + 1e-6) +
-                       8 * (d_ + 4) * geometry::kUnitRoundoff * (magnitude + radius);
+                       8 * (d + 4) * geometry::kUnitRoundoff * (magnitude + radius);
   if (!std::isfinite(reach)) {
     reset_box();
     return;
   }
-  for (int k = 0; k < d_; ++k) {
+  for (int k = 0; k < d; ++k) {
     lower_[static_cast<std::size_t>(k)] = centre_[static_cast<std::size_t>(k)] - reach;
     upper_[static_cast<std::size_t>(k)] = centre_[static_cast<std::size_t>(k)] + reach;
   }
+  // The ball of radius reach about the computed centre holds the sphere. A squared distance
+  // computed in floating point is within a relative (d + 2) u of the true one (differences,
+  // squares and a sum of positive terms; an underflowing term only makes it smaller), so
+  // comparing with reach^2 (1 + 1e-10) never drops a point of the ball. Far below 1 (the
+  // points are scaled to magnitudes near 1), reach^2 itself could underflow: no ball then.
+  ball_ = options_.ball_query && reach > 0x1p-400;
+  ball_reach2_ = reach * reach * (1 + 1e-10);
 }
 
-int FacetSearch::orientation_sign(double value, double abs_tree) const {
+template <int D>
+int SearchKernel<D>::orientation_sign(double value, double abs_tree) const {
   const int s = facet_clean_ ? certified_sign_with(value, abs_tree, orient_gamma_) : 0;
   if (s != 0 || !orientation_exact_ || !(abs_tree < orient_exact_limit_)) return s;
   return value > 0 ? 1 : -1;  // exact: 0 counts as the closed side, like negative values
 }
 
-bool FacetSearch::on_open_side(std::int32_t id) {
+template <int D>
+bool SearchKernel<D>::on_open_side(std::int32_t id) {
+  const int d = dim();
   double o = 0.0, o_abs = 0.0;
-  for (int k = 0; k < d_; ++k) {
+  for (int k = 0; k < d; ++k) {
     o += a_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
     o_abs += a_abs_[static_cast<std::size_t>(k)] * std::fabs(row_[static_cast<std::size_t>(k)]);
   }
   int s = orientation_sign(o, o_abs);
   if (s == 0) {
-    rows_[static_cast<std::size_t>(d_ - 1)] = points_.point(id);
-    const geometry::Frame frame{d_, d_, nullptr, f0_};
+    rows_[static_cast<std::size_t>(d - 1)] = points_.point(id);
+    const geometry::Frame frame{d, d, nullptr, f0_};
     s = sigma_ * geometry::orientation(frame, rows_.data());
-    if (candidate_ >= 0) rows_[static_cast<std::size_t>(d_ - 1)] = points_.point(candidate_);
+    if (candidate_ >= 0) rows_[static_cast<std::size_t>(d - 1)] = points_.point(candidate_);
   }
   return s > 0;
 }
 
-bool FacetSearch::beats_candidate(std::int32_t id) {
+template <int D>
+bool SearchKernel<D>::beats_candidate(std::int32_t id) {
+  const int d = dim();
   double v = 0.0, v_abs = 0.0;
-  for (int k = 0; k <= d_; ++k) {
+  for (int k = 0; k <= d; ++k) {
     v += w_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
     v_abs += w_abs_[static_cast<std::size_t>(k)] * std::fabs(row_[static_cast<std::size_t>(k)]);
   }
   int s = candidate_clean_ ? certified_sign_with(v, v_abs, lifted_gamma_) : 0;
   if (s == 0) {
-    rows_[static_cast<std::size_t>(d_)] = points_.point(id);
-    ranks_[static_cast<std::size_t>(d_ + 1)] = points_.rank[static_cast<std::size_t>(id)];
-    const geometry::Frame frame{d_, d_, nullptr, f0_};
+    rows_[static_cast<std::size_t>(d)] = points_.point(id);
+    ranks_[static_cast<std::size_t>(d + 1)] = points_.rank[static_cast<std::size_t>(id)];
+    const geometry::Frame frame{d, d, nullptr, f0_};
     s = sigma_ * geometry::lifted_sign_perturbed(frame, rows_.data(), ranks_.data());
   }
   return s < 0;
 }
 
-void FacetSearch::consider(std::int32_t id) {
+template <int D>
+void SearchKernel<D>::test(std::int32_t id) {
+  const int d = dim();
   const double* x = points_.point(id);
-  for (int k = 0; k < d_; ++k)
-    if (x[k] < lower_[static_cast<std::size_t>(k)] || x[k] > upper_[static_cast<std::size_t>(k)]) return;
-  // The facet's own vertices lie on its hyperplane (O = 0 exactly, which no filter certifies).
-  for (int i = 0; i < d_; ++i)
+  // The facet's own vertices lie on its hyperplane (O = 0 exactly, which no filter certifies);
+  // the candidate may be met again after being tried as a seed (I(p, p) = 0 likewise).
+  for (int i = 0; i < d; ++i)
     if (facet_[i] == id) return;
+  if (id == candidate_) return;
   ++counters_->points_tested;
   double lift = 0.0;
-  for (int k = 0; k < d_; ++k) {
+  for (int k = 0; k < d; ++k) {
     const double delta = x[k] - f0_[k];
     row_[static_cast<std::size_t>(k)] = delta;
     lift += delta * delta;
   }
-  row_[static_cast<std::size_t>(d_)] = lift;
+  row_[static_cast<std::size_t>(d)] = lift;
   if (!on_open_side(id)) return;
   if (candidate_ < 0 || beats_candidate(id)) set_candidate(id);
 }
 
-bool FacetSearch::prune(std::int32_t node) const {
-  if (!options_.prune_closed_side || !facet_clean_) return false;
-  // The largest value of sigma O over the node's box, at the corner that maximises each term.
+template <int D>
+bool SearchKernel<D>::prune(std::int32_t node) const {
+  const int d = dim();
   const double* lo = points_.tree.lower(node);
   const double* hi = points_.tree.upper(node);
+  if (ball_) {  // the node's box misses the ball (the walk only checked the ball's bounding box)
+    double distance2 = 0.0;
+    for (int k = 0; k < d; ++k) {
+      const double c = centre_[static_cast<std::size_t>(k)];
+      const double delta = std::max(0.0, std::max(lo[k] - c, c - hi[k]));
+      distance2 += delta * delta;
+    }
+    if (distance2 > ball_reach2_) return true;
+  }
+  // Within the candidate's ball, the closed side is a thin cap of its sphere, inside the empty
+  // sphere of the simplex already found there: nodes wholly on the closed side that meet the
+  // ball are rare and hold few points, and testing for them costs more than scanning them
+  // (measured). So the closed side is pruned while there is no ball: before the first
+  // candidate (the box is then unbounded: hull facets depend on it) or without a trustworthy
+  // ball, or without ball queries at all (the paper's search).
+  if (!options_.prune_closed_side || !facet_clean_ || ball_) return false;
+  // The largest value of sigma O over the node's box, at the corner that maximises each term
+  // (rounding is monotonic: a * dhi >= a * dlo in floating point too when a >= 0).
   double m = 0.0, m_abs = 0.0;
-  for (int k = 0; k < d_; ++k) {
+  for (int k = 0; k < d; ++k) {
     const double a = a_[static_cast<std::size_t>(k)];
     const double dlo = lo[k] - f0_[k], dhi = hi[k] - f0_[k];
-    m += std::max(a * dlo, a * dhi);
+    m += a * (a >= 0 ? dhi : dlo);
     m_abs += a_abs_[static_cast<std::size_t>(k)] * std::max(std::fabs(dlo), std::fabs(dhi));
   }
   return orientation_sign(m, m_abs) < 0;
 }
 
-std::int32_t FacetSearch::find_apex(const std::int32_t* facet, int sigma, SearchCounters& counters) {
+template <int D>
+std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, SearchCounters& counters) {
+  const int d = dim();
   counters_ = &counters;
   set_facet(facet, sigma);
   candidate_ = -1;
   reset_box();
-  if (options_.use_kdtree) {
-    counters.calls += points_.tree.search(*this);
+  if (options_.seed_candidate) {
+    for (int i = 0; i < d; ++i) {
+      const std::int32_t* seeds = &recent_[static_cast<std::size_t>(facet[i]) * kSeeds];
+      for (int k = 0; k < kSeeds; ++k)
+        if (seeds[k] >= 0) consider(seeds[k]);
+    }
+  }
+  if (options_.use_kdtree && options_.bottom_up) {
+    counters.calls += points_.tree.search_from<D>(*this, points_.tree.leaf_of(facet[0]));
+  } else if (options_.use_kdtree) {
+    counters.calls += points_.tree.search<D>(*this);
   } else {
     ++counters.calls;
     for (std::int32_t id = 0; id < points_.size; ++id) consider(id);
   }
+  if (options_.seed_candidate && candidate_ >= 0) {
+    for (int i = 0; i < d; ++i) {
+      std::int32_t* seeds = &recent_[static_cast<std::size_t>(facet[i]) * kSeeds];
+      for (int k = kSeeds - 1; k > 0; --k) seeds[k] = seeds[k - 1];
+      seeds[0] = candidate_;
+    }
+  }
   return candidate_;
+}
+
+}  // namespace
+
+FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options) {
+  switch (points.dim) {
+    case 2: kernel_ = std::make_unique<SearchKernel<2>>(points, options); break;
+    case 3: kernel_ = std::make_unique<SearchKernel<3>>(points, options); break;
+    case 4: kernel_ = std::make_unique<SearchKernel<4>>(points, options); break;
+    case 5: kernel_ = std::make_unique<SearchKernel<5>>(points, options); break;
+    case 6: kernel_ = std::make_unique<SearchKernel<6>>(points, options); break;
+    default: kernel_ = std::make_unique<SearchKernel<0>>(points, options); break;
+  }
+}
+
+FacetSearch::~FacetSearch() = default;
+
+std::int32_t FacetSearch::find_apex(const std::int32_t* facet, int sigma, SearchCounters& counters) {
+  return kernel_->find_apex(facet, sigma, counters);
 }
 
 }  // namespace drange::engine

@@ -18,13 +18,13 @@ bool FacetTable::close_or_open(const std::int32_t* ids, FacetOwner owner, FacetO
   for (;; slot = (slot + 1) & mask_) {
     if (empty(slot)) break;
     if (equal(slot, ids)) {
-      *other = owners_[slot];
+      *other = this->owner(slot);
       erase(slot);
       return true;
     }
   }
-  std::copy(ids, ids + d_, ids_.begin() + static_cast<std::ptrdiff_t>(slot * static_cast<std::size_t>(d_)));
-  owners_[slot] = owner;
+  std::copy(ids, ids + d_, slot_ids(slot));
+  set_owner(slot, owner);
   if (++size_ * 2 > mask_ + 1) rehash((mask_ + 1) * 2);
   return false;
 }
@@ -41,27 +41,23 @@ void FacetTable::erase(std::size_t hole) {
     // The entry at `next` may move to `hole` if its home is not in the cyclic range (hole, next].
     const bool home_after_hole = (next > hole) ? (home > hole && home <= next) : (home > hole || home <= next);
     if (home_after_hole) continue;
-    std::copy(slot_ids(next), slot_ids(next) + d_, ids_.begin() + static_cast<std::ptrdiff_t>(hole * static_cast<std::size_t>(d_)));
-    owners_[hole] = owners_[next];
+    std::copy(slot_ids(next), slot_ids(next) + stride(), slot_ids(hole));  // ids and owner
     hole = next;
   }
-  ids_[hole * static_cast<std::size_t>(d_)] = -1;
+  slot_ids(hole)[0] = -1;
 }
 
 void FacetTable::rehash(std::size_t capacity) {
-  std::vector<std::int32_t> old_ids(capacity * static_cast<std::size_t>(d_), -1);
-  std::vector<FacetOwner> old_owners(capacity);
-  old_ids.swap(ids_);
-  old_owners.swap(owners_);
-  const std::size_t old_capacity = old_owners.size();
+  std::vector<std::int32_t> old(capacity * stride(), -1);
+  old.swap(slots_);
+  const std::size_t old_capacity = old.size() / stride();
   mask_ = capacity - 1;
   for (std::size_t s = 0; s < old_capacity; ++s) {
-    const std::int32_t* ids = &old_ids[s * static_cast<std::size_t>(d_)];
-    if (ids[0] < 0) continue;
-    std::size_t slot = hash(ids) & mask_;
+    const std::int32_t* entry = &old[s * stride()];
+    if (entry[0] < 0) continue;
+    std::size_t slot = hash(entry) & mask_;
     while (!empty(slot)) slot = (slot + 1) & mask_;
-    std::copy(ids, ids + d_, ids_.begin() + static_cast<std::ptrdiff_t>(slot * static_cast<std::size_t>(d_)));
-    owners_[slot] = old_owners[s];
+    std::copy(entry, entry + stride(), slot_ids(slot));
   }
 }
 

@@ -4,7 +4,9 @@
 // a facet is inserted when the first simplex on one of its sides is found, and removed when it
 // is met a second time (the simplex on its other side was found). The hash is the paper's
 // polynomial in the ids, taken modulo 2^64 and mixed; collisions are resolved by linear probing,
-// and removal shifts the following entries back (no tombstones), so lookups stay short.
+// and removal shifts the following entries back (no tombstones), so lookups stay short. A slot
+// holds the ids and the owner side by side (d + 2 ints): one cache line per probe on a large
+// frontier, where the table no longer fits in cache.
 #pragma once
 
 #include <cstdint>
@@ -34,7 +36,7 @@ class FacetTable {
     return true;
   }
   std::size_t size() const { return size_; }
-  std::size_t memory_bytes() const { return ids_.capacity() * sizeof(std::int32_t) + owners_.capacity() * sizeof(FacetOwner); }
+  std::size_t memory_bytes() const { return slots_.capacity() * sizeof(std::int32_t); }
 
  private:
   std::uint64_t hash(const std::int32_t* ids) const {
@@ -44,8 +46,19 @@ class FacetTable {
     h *= 0xBF58476D1CE4E5B9ull;
     return h ^ (h >> 32);
   }
-  const std::int32_t* slot_ids(std::size_t slot) const { return &ids_[slot * static_cast<std::size_t>(d_)]; }
-  bool empty(std::size_t slot) const { return ids_[slot * static_cast<std::size_t>(d_)] < 0; }
+  std::size_t stride() const { return static_cast<std::size_t>(d_) + 2; }
+  std::int32_t* slot_ids(std::size_t slot) { return &slots_[slot * stride()]; }
+  const std::int32_t* slot_ids(std::size_t slot) const { return &slots_[slot * stride()]; }
+  FacetOwner owner(std::size_t slot) const {
+    const std::int32_t* s = slot_ids(slot) + d_;
+    return FacetOwner{s[0], s[1]};
+  }
+  void set_owner(std::size_t slot, FacetOwner owner) {
+    std::int32_t* s = slot_ids(slot) + d_;
+    s[0] = owner.simplex;
+    s[1] = owner.face;
+  }
+  bool empty(std::size_t slot) const { return slots_[slot * stride()] < 0; }
   bool equal(std::size_t slot, const std::int32_t* ids) const {
     const std::int32_t* s = slot_ids(slot);
     for (int k = 0; k < d_; ++k)
@@ -59,8 +72,8 @@ class FacetTable {
   int d_;
   std::size_t mask_ = 0;
   std::size_t size_ = 0;
-  std::vector<std::int32_t> ids_;  // capacity * d; -1 in the first id marks an empty slot
-  std::vector<FacetOwner> owners_;
+  // capacity slots of d + 2 ints: the ids (-1 in the first marks an empty slot), then the owner.
+  std::vector<std::int32_t> slots_;
 };
 
 }  // namespace drange::engine

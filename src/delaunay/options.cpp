@@ -8,15 +8,20 @@
 namespace drange {
 
 SearchOptions search_variant(const std::string& name) {
-  if (name == "full") return SearchOptions{true, true, true};
-  if (name == "scan") return SearchOptions{false, false, false};
-  if (name == "kdtree") return SearchOptions{true, false, false};
-  if (name == "no-prune") return SearchOptions{true, false, true};
-  if (name == "no-order") return SearchOptions{true, true, false};
+  //                                 kdtree prune  order  bottom_up seed  ball
+  if (name == "full") return SearchOptions{true, true, true, true, true, true};
+  if (name == "scan") return SearchOptions{false, false, false, false, false, false};
+  if (name == "kdtree") return SearchOptions{true, false, false, false, false, false};
+  if (name == "no-prune") return SearchOptions{true, false, true, true, true, true};
+  if (name == "no-order") return SearchOptions{true, true, false, true, true, true};
+  if (name == "paper") return SearchOptions{true, true, true, false, false, false};
+  if (name == "no-bottom-up") return SearchOptions{true, true, true, false, true, true};
+  if (name == "no-seed") return SearchOptions{true, true, true, true, false, true};
+  if (name == "no-ball") return SearchOptions{true, true, true, true, true, false};
   throw UsageError("unknown search variant '" + name + "' (expected one of: " + search_variant_names() + ")");
 }
 
-const char* search_variant_names() { return "full, scan, kdtree, no-prune, no-order"; }
+const char* search_variant_names() { return "full, scan, kdtree, no-prune, no-order, paper, no-bottom-up, no-seed, no-ball"; }
 
 std::string Statistics::summary() const {
   char line[640];

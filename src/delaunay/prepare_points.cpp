@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "drange/errors.hpp"
 #include "geometry/error_bound.hpp"
@@ -64,35 +65,68 @@ void mark_dyadic(const std::vector<double>& coords, PointStore& store) {
   store.dyadic = unit != std::numeric_limits<int>::max() && largest < std::ldexp(1.0, 50 + unit);
 }
 
-}  // namespace
-
-PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates) {
-  check_input(input);
+// The input indices in lexicographic order of the points (ties: the lower index first).
+std::vector<std::int64_t> lexicographic_order(PointsView input) {
   const int d = input.dim;
-  auto less = [&](std::int64_t a, std::int64_t b) {
+  std::vector<std::int64_t> lex(input.n);
+  std::iota(lex.begin(), lex.end(), 0);
+  std::sort(lex.begin(), lex.end(), [&](std::int64_t a, std::int64_t b) {
     const double* p = input.point(static_cast<std::size_t>(a));
     const double* q = input.point(static_cast<std::size_t>(b));
     for (int k = 0; k < d; ++k)
       if (p[k] != q[k]) return p[k] < q[k];
     return a < b;  // equal points: the first input index is the original
-  };
-  std::vector<std::int64_t> lex(input.n);
-  std::iota(lex.begin(), lex.end(), 0);
-  std::sort(lex.begin(), lex.end(), less);
+  });
+  return lex;
+}
 
-  // Distinct points in lexicographic order: their position is their rank.
-  std::vector<std::int64_t> distinct;
-  distinct.reserve(input.n);
+// The same order, sorting the points themselves next to their index (fixed d: contiguous
+// memory instead of an indirection per comparison). The order is total, so the result is the
+// same permutation.
+template <int D>
+std::vector<std::int64_t> lexicographic_order_fixed(PointsView input) {
+  struct Item {
+    double x[D];
+    std::int64_t index;
+  };
+  std::vector<Item> items(input.n);
+  for (std::size_t i = 0; i < input.n; ++i) {
+    std::copy_n(input.point(i), D, items[i].x);
+    items[i].index = static_cast<std::int64_t>(i);
+  }
+  std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
+    for (int k = 0; k < D; ++k)
+      if (a.x[k] != b.x[k]) return a.x[k] < b.x[k];
+    return a.index < b.index;
+  });
+  std::vector<std::int64_t> lex(input.n);
+  for (std::size_t i = 0; i < input.n; ++i) lex[i] = items[i].index;
+  return lex;
+}
+
+}  // namespace
+
+PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates) {
+  check_input(input);
+  const int d = input.dim;
+  // Distinct points in lexicographic order: their position is their rank. The order is
+  // compacted in place (a duplicate follows its original, the first input index).
+  std::vector<std::int64_t> distinct = d == 2   ? lexicographic_order_fixed<2>(input)
+                                       : d == 3 ? lexicographic_order_fixed<3>(input)
+                                       : d == 4 ? lexicographic_order_fixed<4>(input)
+                                                : lexicographic_order(input);
   duplicates.clear();
-  for (std::size_t i = 0; i < lex.size(); ++i) {
-    if (!distinct.empty() &&
-        std::equal(input.point(static_cast<std::size_t>(lex[i])), input.point(static_cast<std::size_t>(lex[i])) + d,
-                   input.point(static_cast<std::size_t>(distinct.back())))) {
-      duplicates.push_back(Duplicate{lex[i], distinct.back()});
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < distinct.size(); ++i) {
+    const std::int64_t index = distinct[i];
+    const double* p = input.point(static_cast<std::size_t>(index));
+    if (kept > 0 && std::equal(p, p + d, input.point(static_cast<std::size_t>(distinct[kept - 1])))) {
+      duplicates.push_back(Duplicate{index, distinct[kept - 1]});
       continue;
     }
-    distinct.push_back(lex[i]);
+    distinct[kept++] = index;
   }
+  distinct.resize(kept);
   std::sort(duplicates.begin(), duplicates.end(), [](const Duplicate& a, const Duplicate& b) { return a.index < b.index; });
   if (distinct.size() < static_cast<std::size_t>(d + 1))
     throw DegenerateInputError("only " + std::to_string(distinct.size()) + " distinct point" +
@@ -108,15 +142,13 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
     std::copy_n(input.point(static_cast<std::size_t>(distinct[r])), d, by_rank.begin() + static_cast<std::ptrdiff_t>(r * static_cast<std::size_t>(d)));
   store.scaled = scale_by_power_of_two(by_rank);
   mark_dyadic(by_rank, store);
-  store.tree.build(by_rank.data(), store.size, d, leaf_size);
+  store.tree.build_and_reorder(by_rank.data(), store.size, d, leaf_size);
+  store.coords = std::move(by_rank);  // now in tree order
   const std::vector<std::int32_t>& order = store.tree.order();
-  store.coords.resize(by_rank.size());
   store.rank.resize(distinct.size());
   store.input_index.resize(distinct.size());
   for (std::size_t id = 0; id < order.size(); ++id) {
     const auto r = static_cast<std::size_t>(order[id]);
-    std::copy_n(by_rank.begin() + static_cast<std::ptrdiff_t>(r * static_cast<std::size_t>(d)), d,
-                store.coords.begin() + static_cast<std::ptrdiff_t>(id * static_cast<std::size_t>(d)));
     store.rank[id] = static_cast<std::int64_t>(r);
     store.input_index[id] = distinct[r];
   }

@@ -13,6 +13,7 @@
 #include <functional>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "delaunay/facet_search.hpp"
 #include "delaunay/facet_table.hpp"
@@ -44,29 +45,50 @@ int sort_with_parity(std::int32_t* ids, int n) {
   return parity;
 }
 
-// The open facets waiting for their search: sorted ids, the owner, and the open side.
+// The open facets waiting for their search: sorted ids, the owner, and the open side. Entries
+// of d + 3 ints in blocks of kBlock entries: O(1) per push and pop, and a block is freed as soon
+// as it has been read, so memory follows the waiting facets (a queue of millions in 5D) without
+// the transient doubling of a growing array.
 class FacetQueue {
  public:
-  explicit FacetQueue(int d) : d_(d) {}
+  explicit FacetQueue(int d) : d_(d), width_(static_cast<std::size_t>(d) + 3) {}
   void push(const std::int32_t* ids, engine::FacetOwner owner, int sigma) {
-    data_.insert(data_.end(), ids, ids + d_);
-    data_.push_back(owner.simplex);
-    data_.push_back(owner.face);
-    data_.push_back(sigma);
+    if (blocks_.empty() || tail_ == kBlock) {
+      blocks_.emplace_back(kBlock * width_);
+      tail_ = 0;
+    }
+    std::int32_t* entry = &blocks_.back()[tail_ * width_];
+    std::copy(ids, ids + d_, entry);
+    entry[d_] = owner.simplex;
+    entry[d_ + 1] = owner.face;
+    entry[d_ + 2] = sigma;
+    ++tail_;
+    ++count_;
   }
-  bool empty() const { return data_.empty(); }
+  bool empty() const { return count_ == 0; }
   void pop(std::int32_t* ids, engine::FacetOwner& owner, int& sigma) {
-    for (int k = 0; k < d_; ++k) ids[k] = data_[static_cast<std::size_t>(k)];
-    owner.simplex = data_[static_cast<std::size_t>(d_)];
-    owner.face = data_[static_cast<std::size_t>(d_ + 1)];
-    sigma = data_[static_cast<std::size_t>(d_ + 2)];
-    data_.erase(data_.begin(), data_.begin() + d_ + 3);
+    const std::int32_t* entry = &blocks_.front()[head_ * width_];
+    std::copy(entry, entry + d_, ids);
+    owner.simplex = entry[d_];
+    owner.face = entry[d_ + 1];
+    sigma = entry[d_ + 2];
+    --count_;
+    if (++head_ == kBlock || count_ == 0) {  // the front block is read (or the queue is empty)
+      blocks_.pop_front();
+      head_ = 0;
+      if (blocks_.empty()) tail_ = 0;
+    }
   }
-  std::size_t size() const { return data_.size() / static_cast<std::size_t>(d_ + 3); }
+  std::size_t size() const { return count_; }
 
  private:
+  static constexpr std::size_t kBlock = 4096;
   int d_;
-  std::deque<std::int32_t> data_;
+  std::size_t width_;
+  std::deque<std::vector<std::int32_t>> blocks_;
+  std::size_t head_ = 0;   // next entry to pop in the front block
+  std::size_t tail_ = 0;   // next free entry in the back block
+  std::size_t count_ = 0;  // waiting entries
 };
 
 // Calls Options::progress every kProgressInterval simplices, counting down so that the main

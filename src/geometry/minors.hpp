@@ -8,6 +8,7 @@
 // does: one facet, many candidate points) without recomputing the first r levels.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -31,14 +32,25 @@ class SubsetTable {
   std::vector<std::vector<std::uint32_t>> by_size_;
 };
 
+// Up to kInlineColumns columns the minors live in the object itself (no allocation: the
+// predicates build one table per call); beyond, on the heap.
 class MinorTable {
  public:
-  explicit MinorTable(int columns)
-      : subsets_(&SubsetTable::get(columns)),
-        value_(std::size_t{1} << columns, 0.0),
-        abs_(std::size_t{1} << columns, 0.0) {
-    value_[0] = 1.0;
-    abs_[0] = 1.0;
+  static constexpr int kInlineColumns = 7;
+
+  explicit MinorTable(int columns) : subsets_(&SubsetTable::get(columns)) { attach(columns); }
+  MinorTable(const MinorTable& other) : subsets_(other.subsets_), heap_(other.heap_) {
+    attach(other.columns());
+    copy_from(other);
+  }
+  MinorTable& operator=(const MinorTable& other) {
+    if (this != &other) {
+      subsets_ = other.subsets_;
+      heap_ = other.heap_;
+      attach(other.columns());
+      copy_from(other);
+    }
+    return *this;
   }
 
   int columns() const { return subsets_->columns(); }
@@ -65,9 +77,31 @@ class MinorTable {
   double abs_minor(std::uint32_t mask) const { return abs_[mask]; }
 
  private:
+  // Points value_ and abs_ at the storage; only the empty minor needs a value before set_row.
+  void attach(int columns) {
+    const std::size_t size = std::size_t{1} << columns;
+    if (columns > kInlineColumns) {
+      heap_.resize(2 * size);
+      value_ = heap_.data();
+    } else {
+      value_ = inline_;
+    }
+    abs_ = value_ + size;
+    value_[0] = 1.0;
+    abs_[0] = 1.0;
+  }
+  void copy_from(const MinorTable& other) {
+    if (columns() > kInlineColumns) return;  // heap_ was copied
+    const std::size_t size = std::size_t{1} << columns();
+    std::copy(other.value_, other.value_ + size, value_);
+    std::copy(other.abs_, other.abs_ + size, abs_);
+  }
+
   const SubsetTable* subsets_;
-  std::vector<double> value_;
-  std::vector<double> abs_;
+  std::vector<double> heap_;
+  double* value_ = nullptr;
+  double* abs_ = nullptr;
+  double inline_[2 << kInlineColumns];
 };
 
 }  // namespace drange::geometry

@@ -3,6 +3,7 @@
 #include "geometry/predicates.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -45,7 +46,9 @@ int common_unit_exponent(int dim, const double* base, const double* const* point
 // sum and product of the expansion is bounded by the absolute-value tree of its minor. So if
 // every minor's absolute tree is below 2^53 of its unit, no operation rounded: the value is
 // exact, zero included. This is what decides the ties of integer grids without GMP.
-bool evaluation_is_exact(const MinorTable& minors, int n, int lift_column, int unit) {
+template <class UnitOf>
+bool evaluation_is_exact(const MinorTable& minors, int n, int lift_column, UnitOf unit_of) {
+  const int unit = unit_of();
   if (unit == std::numeric_limits<int>::max()) return true;  // all coordinates zero
   for (std::uint32_t mask = 1; mask < (std::uint32_t{1} << n); ++mask) {
     const bool lift = lift_column >= 0 && (mask >> lift_column & 1u);
@@ -57,12 +60,14 @@ bool evaluation_is_exact(const MinorTable& minors, int n, int lift_column, int u
 }
 
 // The filter: the sign of the determinant of the rows built by `fill_row` when the error bound
-// certifies it, or when the evaluation provably did not round; nullopt otherwise.
-template <class FillRow>
-std::optional<int> filtered_sign(int n, int entry_roundings, int lift_column, int unit, FillRow fill_row) {
+// certifies it, or when the evaluation provably did not round; nullopt otherwise. `unit_of`
+// gives the common unit exponent of the points (common_unit_exponent), needed only when the
+// error bound does not decide.
+template <class FillRow, class UnitOf>
+std::optional<int> filtered_sign(int n, int entry_roundings, int lift_column, UnitOf unit_of, FillRow fill_row) {
   if (n > SubsetTable::kMaxColumns) return std::nullopt;
   MinorTable minors(n);
-  std::vector<double> row(static_cast<std::size_t>(n));
+  std::array<double, SubsetTable::kMaxColumns> row;
   const FloatingPointWatch watch;
   for (int r = 0; r < n; ++r) {
     fill_row(r, row.data());
@@ -75,7 +80,7 @@ std::optional<int> filtered_sign(int n, int entry_roundings, int lift_column, in
   const double value = minors.minor(all);
   const int s = certified_sign(value, minors.abs_minor(all), laplace_roundings(n, entry_roundings));
   if (s != 0) return s;
-  if (evaluation_is_exact(minors, n, lift_column, unit)) return (value > 0) - (value < 0);
+  if (evaluation_is_exact(minors, n, lift_column, unit_of)) return (value > 0) - (value < 0);
   return std::nullopt;
 }
 
@@ -117,10 +122,50 @@ int exact_lifted_sign(const Frame& f, const double* const* points) {
   return bareiss_sign(a, n);
 }
 
+// Orientation for k <= 3 written out: the sign when a filter certifies it, else 0 (the
+// generic path decides). k = 1: the sign of a difference of doubles is exact in round to
+// nearest. k = 2, 3: the Laplace expansion along the last row, with its absolute-value tree
+// and the same error bound as the generic filter (laplace_roundings(k, 1) over-counts these
+// short expressions), under a watch for underflow.
+int small_orientation(const Frame& f, const double* const* points) {
+  const double* b = f.base;
+  if (f.k == 1) {
+    const double x = points[0][f.axis(0)], y = b[f.axis(0)];
+    return (x > y) - (x < y);
+  }
+  const FloatingPointWatch watch;
+  double value = 0.0, abs_tree = 0.0;
+  if (f.k == 2) {
+    const int x = f.axis(0), y = f.axis(1);
+    const double a00 = points[0][x] - b[x], a01 = points[0][y] - b[y];
+    const double a10 = points[1][x] - b[x], a11 = points[1][y] - b[y];
+    value = a00 * a11 - a01 * a10;
+    abs_tree = std::fabs(a00) * std::fabs(a11) + std::fabs(a01) * std::fabs(a10);
+  } else {
+    const int x = f.axis(0), y = f.axis(1), z = f.axis(2);
+    const double a00 = points[0][x] - b[x], a01 = points[0][y] - b[y], a02 = points[0][z] - b[z];
+    const double a10 = points[1][x] - b[x], a11 = points[1][y] - b[y], a12 = points[1][z] - b[z];
+    const double a20 = points[2][x] - b[x], a21 = points[2][y] - b[y], a22 = points[2][z] - b[z];
+    const double m12 = a01 * a12 - a02 * a11, m02 = a00 * a12 - a02 * a10, m01 = a00 * a11 - a01 * a10;
+    const double n12 = std::fabs(a01) * std::fabs(a12) + std::fabs(a02) * std::fabs(a11);
+    const double n02 = std::fabs(a00) * std::fabs(a12) + std::fabs(a02) * std::fabs(a10);
+    const double n01 = std::fabs(a00) * std::fabs(a11) + std::fabs(a01) * std::fabs(a10);
+    value = a20 * m12 - a21 * m02 + a22 * m01;
+    abs_tree = std::fabs(a20) * n12 + std::fabs(a21) * n02 + std::fabs(a22) * n01;
+  }
+  const int s = certified_sign(value, abs_tree, laplace_roundings(f.k, 1));
+  return watch.clean() ? s : 0;
+}
+
 }  // namespace
 
 int orientation(const Frame& f, const double* const* points) {
-  const int unit = common_unit_exponent(f.dim, f.base, points, f.k);
+  if (f.k <= 3 && f.k >= 1) {
+    const int s = small_orientation(f, points);
+    if (s != 0) return s;
+    if (f.k == 1) return 0;  // exact
+  }
+  const auto unit = [&] { return common_unit_exponent(f.dim, f.base, points, f.k); };
   const std::optional<int> s = filtered_sign(f.k, 1, -1, unit, [&](int r, double* row) {
     for (int c = 0; c < f.k; ++c) row[c] = points[r][f.axis(c)] - f.base[f.axis(c)];
   });
@@ -128,7 +173,7 @@ int orientation(const Frame& f, const double* const* points) {
 }
 
 int lifted_sign(const Frame& f, const double* const* points) {
-  const int unit = common_unit_exponent(f.dim, f.base, points, f.k + 1);
+  const auto unit = [&] { return common_unit_exponent(f.dim, f.base, points, f.k + 1); };
   const std::optional<int> s = filtered_sign(f.k + 1, lifted_entry_roundings(f.dim), f.k, unit, [&](int r, double* row) {
     for (int c = 0; c < f.k; ++c) row[c] = points[r][f.axis(c)] - f.base[f.axis(c)];
     row[f.k] = squared_distance(f.dim, points[r], f.base);

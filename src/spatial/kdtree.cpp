@@ -3,27 +3,115 @@
 
 #include <algorithm>
 #include <numeric>
+#include <vector>
 
 namespace drange::spatial {
 
 void KdTree::build(const double* coords, std::int32_t n, int dim, int leaf_size) {
+  build_any(coords, n, dim, leaf_size, nullptr);
+}
+
+void KdTree::build_and_reorder(double* coords, std::int32_t n, int dim, int leaf_size) {
+  build_any(coords, n, dim, leaf_size, coords);
+}
+
+void KdTree::build_any(const double* coords, std::int32_t n, int dim, int leaf_size, double* reordered) {
   dim_ = dim;
   order_.resize(static_cast<std::size_t>(n));
   std::iota(order_.begin(), order_.end(), 0);
   nodes_.clear();
   boxes_.clear();
+  parent_.clear();
+  leaf_of_.assign(static_cast<std::size_t>(n), -1);
   const std::size_t expected_nodes = 2 * static_cast<std::size_t>(n / std::max(1, leaf_size) + 1);
   nodes_.reserve(expected_nodes);
   boxes_.reserve(expected_nodes * 2 * static_cast<std::size_t>(dim));
-  if (n > 0) build_node(coords, 0, n, std::max(1, leaf_size));
+  parent_.reserve(expected_nodes);
+  if (n == 0) return;
+  switch (dim) {
+    case 2: build_fixed<2>(coords, n, std::max(1, leaf_size), reordered); return;
+    case 3: build_fixed<3>(coords, n, std::max(1, leaf_size), reordered); return;
+    case 4: build_fixed<4>(coords, n, std::max(1, leaf_size), reordered); return;
+    default: break;
+  }
+  build_node(coords, 0, n, std::max(1, leaf_size), -1);
+  if (reordered) {
+    const auto d = static_cast<std::size_t>(dim);
+    const std::vector<double> copy(coords, coords + static_cast<std::size_t>(n) * d);
+    for (std::size_t i = 0; i < order_.size(); ++i)
+      std::copy_n(&copy[static_cast<std::size_t>(order_[i]) * d], d, reordered + i * d);
+  }
 }
 
-std::int32_t KdTree::build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size) {
+std::int32_t KdTree::add_node(std::int32_t begin, std::int32_t end, std::int32_t parent) {
   const std::int32_t index = static_cast<std::int32_t>(nodes_.size());
   nodes_.push_back(Node{begin, end, -1, 0, 0.0});
-  const std::size_t box = boxes_.size();
-  boxes_.resize(box + 2 * static_cast<std::size_t>(dim_));
-  double* lo = &boxes_[box];
+  parent_.push_back(parent);
+  boxes_.resize(boxes_.size() + 2 * static_cast<std::size_t>(dim_));
+  return index;
+}
+
+namespace {
+template <int D>
+struct Item {
+  double x[D];
+  std::int32_t id;
+};
+}  // namespace
+
+template <int D>
+void KdTree::build_fixed(const double* coords, std::int32_t n, int leaf_size, double* reordered) {
+  std::vector<Item<D>> items(static_cast<std::size_t>(n));
+  for (std::int32_t i = 0; i < n; ++i) {
+    Item<D>& item = items[static_cast<std::size_t>(i)];
+    std::copy_n(coords + static_cast<std::size_t>(i) * D, D, item.x);
+    item.id = i;
+  }
+  build_items(items.data(), 0, n, leaf_size, -1);
+  for (std::int32_t i = 0; i < n; ++i) {
+    const Item<D>& item = items[static_cast<std::size_t>(i)];
+    order_[static_cast<std::size_t>(i)] = item.id;
+    if (reordered) std::copy_n(item.x, D, reordered + static_cast<std::size_t>(i) * D);
+  }
+}
+
+// As build_node, step for step (std::nth_element sees the same keys in the same order, so it
+// makes the same moves: the tree is the same).
+template <class Item>
+std::int32_t KdTree::build_items(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent) {
+  constexpr int kDim = static_cast<int>(sizeof(Item::x) / sizeof(double));
+  const std::int32_t index = add_node(begin, end, parent);
+  double lo[kDim], hi[kDim];
+  for (int k = 0; k < kDim; ++k) lo[k] = hi[k] = items[begin].x[k];
+  for (std::int32_t i = begin + 1; i < end; ++i)
+    for (int k = 0; k < kDim; ++k) {
+      lo[k] = std::min(lo[k], items[i].x[k]);
+      hi[k] = std::max(hi[k], items[i].x[k]);
+    }
+  std::copy_n(lo, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim]);
+  std::copy_n(hi, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim + kDim]);
+  int axis = 0;
+  for (int k = 1; k < kDim; ++k)
+    if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+  if (end - begin <= leaf_size || hi[axis] == lo[axis]) {
+    std::fill(leaf_of_.begin() + begin, leaf_of_.begin() + end, index);
+    return index;
+  }
+  const std::int32_t middle = begin + (end - begin) / 2;
+  std::nth_element(items + begin, items + middle, items + end,
+                   [axis](const Item& a, const Item& b) { return a.x[axis] < b.x[axis]; });
+  nodes_[static_cast<std::size_t>(index)].split_axis = axis;
+  nodes_[static_cast<std::size_t>(index)].split_value = items[middle].x[axis];
+  build_items(items, begin, middle, leaf_size, index);
+  const std::int32_t right = build_items(items, middle, end, leaf_size, index);
+  nodes_[static_cast<std::size_t>(index)].right = right;
+  return index;
+}
+
+std::int32_t KdTree::build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size,
+                                std::int32_t parent) {
+  const std::int32_t index = add_node(begin, end, parent);
+  double* lo = &boxes_[static_cast<std::size_t>(index) * 2 * static_cast<std::size_t>(dim_)];
   double* hi = lo + dim_;
   auto point = [&](std::int32_t i) { return coords + static_cast<std::size_t>(order_[static_cast<std::size_t>(i)]) * dim_; };
   for (int k = 0; k < dim_; ++k) lo[k] = hi[k] = point(begin)[k];
@@ -35,7 +123,10 @@ std::int32_t KdTree::build_node(const double* coords, std::int32_t begin, std::i
   int axis = 0;
   for (int k = 1; k < dim_; ++k)
     if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-  if (end - begin <= leaf_size || hi[axis] == lo[axis]) return index;
+  if (end - begin <= leaf_size || hi[axis] == lo[axis]) {
+    std::fill(leaf_of_.begin() + begin, leaf_of_.begin() + end, index);
+    return index;
+  }
 
   const std::int32_t middle = begin + (end - begin) / 2;
   auto first = order_.begin() + begin;
@@ -47,14 +138,15 @@ std::int32_t KdTree::build_node(const double* coords, std::int32_t begin, std::i
   // coordinate equal to split on both sides is harmless.
   nodes_[static_cast<std::size_t>(index)].split_axis = axis;
   nodes_[static_cast<std::size_t>(index)].split_value = split;
-  build_node(coords, begin, middle, leaf_size);
-  const std::int32_t right = build_node(coords, middle, end, leaf_size);
+  build_node(coords, begin, middle, leaf_size, index);
+  const std::int32_t right = build_node(coords, middle, end, leaf_size, index);
   nodes_[static_cast<std::size_t>(index)].right = right;
   return index;
 }
 
 std::size_t KdTree::memory_bytes() const {
-  return order_.capacity() * sizeof(std::int32_t) + nodes_.capacity() * sizeof(Node) + boxes_.capacity() * sizeof(double);
+  return (order_.capacity() + parent_.capacity() + leaf_of_.capacity()) * sizeof(std::int32_t) +
+         nodes_.capacity() * sizeof(Node) + boxes_.capacity() * sizeof(double);
 }
 
 }  // namespace drange::spatial

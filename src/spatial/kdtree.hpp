@@ -10,7 +10,10 @@
 //
 // `search` walks the tree under a query box that the visitor may shrink at any moment (the
 // paper's narrowing search region); the visitor also decides which child to enter first
-// (2.4.2) and may prune a node for reasons of its own (2.4.1).
+// (2.4.2) and may prune a node for reasons of its own (2.4.1). `search_from` does the same walk
+// bottom-up, from the leaf that holds a given point: it visits that leaf, then climbs, visiting
+// at each level the sibling subtree, and stops climbing as soon as the query box lies strictly
+// inside the box of the subtree visited so far (no point outside it can then be in the box).
 #pragma once
 
 #include <cstdint>
@@ -30,8 +33,14 @@ class KdTree {
   // Builds the tree over `n` points of dimension `dim` (row-major `coords`). Returns nothing;
   // order() then gives, for each tree position, the index of the point in `coords`.
   void build(const double* coords, std::int32_t n, int dim, int leaf_size = 8);
+  // The same, then rewrites `coords` in tree order (row i becomes the point order()[i]), for a
+  // caller that renumbers its points (saves it a copy).
+  void build_and_reorder(double* coords, std::int32_t n, int dim, int leaf_size = 8);
 
   const std::vector<std::int32_t>& order() const { return order_; }
+  // The leaf that holds tree position `position` (a point id of the caller, after renumbering).
+  std::int32_t leaf_of(std::int32_t position) const { return leaf_of_[static_cast<std::size_t>(position)]; }
+  std::int32_t parent(std::int32_t node) const { return parent_[static_cast<std::size_t>(node)]; }
   const std::vector<Node>& nodes() const { return nodes_; }
   const double* lower(std::int32_t node) const { return &boxes_[static_cast<std::size_t>(node) * 2 * dim_]; }
   const double* upper(std::int32_t node) const { return lower(node) + dim_; }
@@ -43,37 +52,70 @@ class KdTree {
   //   bool prune(std::int32_t node)                 true: skip the node and its subtree
   //   bool right_first(const Node& node)            which child to enter first
   //   void leaf(std::int32_t begin, std::int32_t end)  scan the points of a leaf
-  // Returns the number of nodes entered (the search's recursive "calls").
-  template <class Visitor>
-  std::uint64_t search(Visitor& visitor) const;
+  // Returns the number of nodes entered (the search's recursive "calls"). D > 0: the caller
+  // promises dim() == D, and the box tests are compiled for that dimension.
+  template <int D = 0, class Visitor>
+  std::uint64_t search(Visitor& visitor) const {
+    return nodes_.empty() ? 0 : walk<D>(visitor, 0);
+  }
+  // The same set of points (every point in the final query box that no prune excluded), found
+  // bottom-up from the leaf `leaf` (leaf_of(id) of a point near the expected answer).
+  template <int D = 0, class Visitor>
+  std::uint64_t search_from(Visitor& visitor, std::int32_t leaf) const;
 
  private:
-  std::int32_t build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size);
+  std::int32_t build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent);
+  // The same construction over points copied next to their index (fixed d: no indirection).
+  template <int D>
+  void build_fixed(const double* coords, std::int32_t n, int leaf_size, double* reordered);
+  void build_any(const double* coords, std::int32_t n, int dim, int leaf_size, double* reordered);
+  template <class Item>
+  std::int32_t build_items(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent);
+  // Appends a node (its box to be filled by the caller); returns its index.
+  std::int32_t add_node(std::int32_t begin, std::int32_t end, std::int32_t parent);
+  // The top-down walk of the subtree rooted at `root`.
+  template <int D, class Visitor>
+  std::uint64_t walk(Visitor& visitor, std::int32_t root) const;
+  template <int D>
+  int dimension() const { return D > 0 ? D : dim_; }
+  template <int D>
   bool meets(std::int32_t node, const double* lo, const double* hi) const {
     const double* a = lower(node);
     const double* b = upper(node);
-    for (int k = 0; k < dim_; ++k)
+    for (int k = 0; k < dimension<D>(); ++k)
       if (b[k] < lo[k] || a[k] > hi[k]) return false;
     return true;
   }
-
+  // True when the query box lies in the open interior of the node's box. A point outside the
+  // node's subtree is separated from it by the split of their lowest common ancestor: on that
+  // axis it is >= the largest (or <= the smallest) coordinate of the node's box, so it is not
+  // in the interior, and hence not in the query box.
+  template <int D>
+  bool contains_strictly(std::int32_t node, const double* lo, const double* hi) const {
+    const double* a = lower(node);
+    const double* b = upper(node);
+    for (int k = 0; k < dimension<D>(); ++k)
+      if (!(a[k] < lo[k] && hi[k] < b[k])) return false;
+    return true;
+  }
   int dim_ = 0;
   std::vector<std::int32_t> order_;
   std::vector<Node> nodes_;
   std::vector<double> boxes_;
+  std::vector<std::int32_t> parent_;   // per node; -1 for the root
+  std::vector<std::int32_t> leaf_of_;  // per tree position
 };
 
-template <class Visitor>
-std::uint64_t KdTree::search(Visitor& visitor) const {
-  if (nodes_.empty()) return 0;
+template <int D, class Visitor>
+std::uint64_t KdTree::walk(Visitor& visitor, std::int32_t root) const {
   std::uint64_t calls = 0;
   // An explicit stack: depth is O(log n) for a median-split tree.
   std::int32_t stack[128];
   int top = 0;
-  stack[top++] = 0;
+  stack[top++] = root;
   while (top > 0) {
     const std::int32_t i = stack[--top];
-    if (!meets(i, visitor.query_lower(), visitor.query_upper())) continue;
+    if (!meets<D>(i, visitor.query_lower(), visitor.query_upper())) continue;
     ++calls;
     if (visitor.prune(i)) continue;
     const Node& node = nodes_[static_cast<std::size_t>(i)];
@@ -89,6 +131,20 @@ std::uint64_t KdTree::search(Visitor& visitor) const {
       stack[top++] = node.right;
       stack[top++] = i + 1;
     }
+  }
+  return calls;
+}
+
+template <int D, class Visitor>
+std::uint64_t KdTree::search_from(Visitor& visitor, std::int32_t leaf) const {
+  // Invariant at the top of the loop: the subtree of `node` has been walked.
+  std::uint64_t calls = walk<D>(visitor, leaf);
+  for (std::int32_t node = leaf; node != 0;) {
+    if (contains_strictly<D>(node, visitor.query_lower(), visitor.query_upper())) break;
+    const std::int32_t up = parent_[static_cast<std::size_t>(node)];
+    const std::int32_t sibling = node == up + 1 ? nodes_[static_cast<std::size_t>(up)].right : up + 1;
+    calls += walk<D>(visitor, sibling);
+    node = up;
   }
   return calls;
 }

@@ -1,0 +1,134 @@
+// tests/kdtree_test.cpp: the kd-tree's two walks against brute force, on random points and on
+// integer grids (many coordinates equal to a split value), with fixed and shrinking boxes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "spatial/kdtree.hpp"
+
+namespace {
+
+using drange::spatial::KdTree;
+
+struct Cloud {
+  int dim;
+  std::vector<double> coords;
+  std::int32_t size() const { return static_cast<std::int32_t>(coords.size() / static_cast<std::size_t>(dim)); }
+};
+
+Cloud random_cloud(int dim, int n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Cloud c{dim, {}};
+  for (int i = 0; i < n * dim; ++i) c.coords.push_back(u(rng));
+  return c;
+}
+
+Cloud grid_cloud(int dim, int side) {
+  Cloud c{dim, {}};
+  int total = 1;
+  for (int k = 0; k < dim; ++k) total *= side;
+  for (int t = 0; t < total; ++t)
+    for (int k = 0, r = t; k < dim; ++k, r /= side) c.coords.push_back(r % side);
+  return c;
+}
+
+// Reports every point of the visited leaves that lies in the box. With `shrink`, the box
+// shrinks towards its centre after every leaf, as the search's candidate sphere does.
+class BoxVisitor {
+ public:
+  BoxVisitor(const std::vector<double>& points, int dim, std::vector<double> lo, std::vector<double> hi, bool shrink)
+      : points_(points), dim_(dim), lo_(std::move(lo)), hi_(std::move(hi)), shrink_(shrink) {}
+  const double* query_lower() const { return lo_.data(); }
+  const double* query_upper() const { return hi_.data(); }
+  bool prune(std::int32_t) const { return false; }
+  bool right_first(const KdTree::Node&) const { return false; }
+  void leaf(std::int32_t begin, std::int32_t end) {
+    for (std::int32_t id = begin; id < end; ++id)
+      if (inside(id)) found.insert(id);
+    if (!shrink_) return;
+    for (int k = 0; k < dim_; ++k) {
+      const double c = (lo_[static_cast<std::size_t>(k)] + hi_[static_cast<std::size_t>(k)]) / 2;
+      lo_[static_cast<std::size_t>(k)] = (lo_[static_cast<std::size_t>(k)] + c) / 2;
+      hi_[static_cast<std::size_t>(k)] = (hi_[static_cast<std::size_t>(k)] + c) / 2;
+    }
+  }
+  bool inside(std::int32_t id) const {
+    const double* x = &points_[static_cast<std::size_t>(id) * static_cast<std::size_t>(dim_)];
+    for (int k = 0; k < dim_; ++k)
+      if (x[k] < lo_[static_cast<std::size_t>(k)] || x[k] > hi_[static_cast<std::size_t>(k)]) return false;
+    return true;
+  }
+  std::set<std::int32_t> found;
+
+ private:
+  const std::vector<double>& points_;
+  int dim_;
+  std::vector<double> lo_, hi_;
+  bool shrink_;
+};
+
+// The points in tree order, as the engine renumbers them.
+std::vector<double> in_tree_order(const Cloud& c, const KdTree& tree) {
+  std::vector<double> out;
+  for (std::int32_t i : tree.order()) out.insert(out.end(), c.coords.begin() + i * c.dim, c.coords.begin() + (i + 1) * c.dim);
+  return out;
+}
+
+void check_walks(const Cloud& cloud, unsigned seed, bool integer) {
+  KdTree tree;
+  tree.build(cloud.coords.data(), cloud.size(), cloud.dim, 8);
+  const std::vector<double> points = in_tree_order(cloud, tree);
+  // Structure: every point's leaf holds it; parent links match the preorder layout.
+  for (std::int32_t id = 0; id < cloud.size(); ++id) {
+    const KdTree::Node& leaf = tree.nodes()[static_cast<std::size_t>(tree.leaf_of(id))];
+    ASSERT_LT(leaf.right, 0);
+    ASSERT_TRUE(leaf.begin <= id && id < leaf.end);
+  }
+  for (std::size_t i = 0; i < tree.nodes().size(); ++i) {
+    const KdTree::Node& node = tree.nodes()[i];
+    if (node.right < 0) continue;
+    ASSERT_EQ(tree.parent(static_cast<std::int32_t>(i) + 1), static_cast<std::int32_t>(i));
+    ASSERT_EQ(tree.parent(node.right), static_cast<std::int32_t>(i));
+  }
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::int32_t> pick(0, cloud.size() - 1);
+  std::uniform_real_distribution<double> radius(0.0, 3.0);
+  for (int query = 0; query < 200; ++query) {
+    // Boxes centred on a point (on a grid: faces exactly on grid lines and split values).
+    const std::int32_t centre = pick(rng);
+    const double r = integer ? std::floor(radius(rng)) : radius(rng) / 20;
+    std::vector<double> lo, hi;
+    for (int k = 0; k < cloud.dim; ++k) {
+      lo.push_back(points[static_cast<std::size_t>(centre) * static_cast<std::size_t>(cloud.dim) + static_cast<std::size_t>(k)] - r);
+      hi.push_back(points[static_cast<std::size_t>(centre) * static_cast<std::size_t>(cloud.dim) + static_cast<std::size_t>(k)] + r);
+    }
+    for (bool shrink : {false, true}) {
+      BoxVisitor top_down(points, cloud.dim, lo, hi, shrink), bottom_up(points, cloud.dim, lo, hi, shrink);
+      tree.search(top_down);
+      tree.search_from(bottom_up, tree.leaf_of(pick(rng)));
+      // Every point in the final box was in every earlier box: it must have been reported.
+      for (BoxVisitor* v : {&top_down, &bottom_up})
+        for (std::int32_t id = 0; id < cloud.size(); ++id)
+          if (v->inside(id)) ASSERT_TRUE(v->found.count(id)) << "d=" << cloud.dim << " point " << id << " missed";
+      if (!shrink) EXPECT_EQ(top_down.found, bottom_up.found);
+    }
+  }
+}
+
+TEST(KdTree, WalksFindEveryPointInTheBoxOnRandomPoints) {
+  for (int d : {2, 3, 4, 5}) check_walks(random_cloud(d, 3000, 40u + static_cast<unsigned>(d)), 7u, false);
+}
+
+TEST(KdTree, WalksFindEveryPointInTheBoxOnGrids) {
+  check_walks(grid_cloud(2, 40), 8u, true);
+  check_walks(grid_cloud(3, 12), 9u, true);
+  check_walks(grid_cloud(4, 6), 10u, true);
+  check_walks(grid_cloud(5, 4), 11u, true);
+}
+
+}  // namespace
