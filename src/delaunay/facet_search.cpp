@@ -58,6 +58,10 @@ void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
     row_[static_cast<std::size_t>(d_)] = lift;
     minors_.set_row(i - 1, row_.data());
   }
+  // This facet's own flags (the static exactness test below depends on them; reading them
+  // later left the previous facet's value there, which made exact fallbacks depend on the
+  // order in which one FacetSearch met its facets).
+  facet_clean_ = points_.scaled && watch.clean();
   // O(x) = det[f_1 - f_0; ...; x - f_0]: Laplace along the last row over the spatial columns.
   const std::uint32_t spatial = bit(d_) - 1;
   // Static exactness (as in geometry/predicates.cpp): with dyadic points, every spatial minor
@@ -77,7 +81,6 @@ void FacetSearch::set_facet(const std::int32_t* facet, int sigma) {
     a_[static_cast<std::size_t>(j)] = sigma * sign * minors_.minor(spatial & ~bit(j));
     a_abs_[static_cast<std::size_t>(j)] = minors_.abs_minor(spatial & ~bit(j));
   }
-  facet_clean_ = points_.scaled && watch.clean();
 }
 
 void FacetSearch::reset_box() {
