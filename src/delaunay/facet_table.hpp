@@ -12,10 +12,13 @@
 
 namespace drange::engine {
 
-// Where a facet was seen: the simplex, and the index (0..d) of the vertex opposite the facet.
+// Where a facet was seen: the simplex, and the index (0..d) of the vertex opposite the facet;
+// and the facet's place in the driver's queue (the number of facets queued before it), so that
+// closing it can mark it there (triangulate.cpp).
 struct FacetOwner {
   std::int32_t simplex;
   std::int32_t face;
+  std::int64_t entry = -1;
 };
 
 class FacetTable {

@@ -64,9 +64,40 @@ void mark_dyadic(const std::vector<double>& coords, PointStore& store) {
   store.dyadic = unit != std::numeric_limits<int>::max() && largest < std::ldexp(1.0, 50 + unit);
 }
 
+// Sorts `values` by `less`, a strict total order (so the result does not depend on how the
+// work is split): consecutive parts sorted at the same time, then merged pairwise.
+template <class Less>
+void sort_in_parallel(std::vector<std::int64_t>& values, Less less, Team& team) {
+  constexpr std::size_t kMinPart = std::size_t{1} << 15;
+  const std::size_t parts = std::min(static_cast<std::size_t>(team.threads()), values.size() / kMinPart);
+  if (parts < 2) {
+    std::sort(values.begin(), values.end(), less);
+    return;
+  }
+  std::vector<std::size_t> bounds;  // part i is [bounds[i], bounds[i + 1])
+  for (std::size_t i = 0; i <= parts; ++i) bounds.push_back(values.size() * i / parts);
+  team.for_each(parts, [&](std::size_t i) {
+    std::sort(values.begin() + static_cast<std::ptrdiff_t>(bounds[i]), values.begin() + static_cast<std::ptrdiff_t>(bounds[i + 1]), less);
+  });
+  std::vector<std::int64_t> merged(values.size());
+  while (bounds.size() > 2) {
+    team.for_each(bounds.size() / 2, [&](std::size_t p) {
+      const auto at = [](std::vector<std::int64_t>& v, std::size_t i) { return v.begin() + static_cast<std::ptrdiff_t>(i); };
+      const std::size_t a = bounds[2 * p], b = bounds[std::min(2 * p + 1, bounds.size() - 1)],
+                        c = bounds[std::min(2 * p + 2, bounds.size() - 1)];
+      std::merge(at(values, a), at(values, b), at(values, b), at(values, c), at(merged, a), less);  // a lone last part is copied
+    });
+    std::vector<std::size_t> next;
+    for (std::size_t i = 0; i < bounds.size(); i += 2) next.push_back(bounds[i]);
+    if (next.back() != bounds.back()) next.push_back(bounds.back());
+    bounds.swap(next);
+    values.swap(merged);
+  }
+}
+
 }  // namespace
 
-PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates) {
+PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates, Team& team) {
   check_input(input);
   const int d = input.dim;
   auto less = [&](std::int64_t a, std::int64_t b) {
@@ -78,7 +109,7 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   };
   std::vector<std::int64_t> lex(input.n);
   std::iota(lex.begin(), lex.end(), 0);
-  std::sort(lex.begin(), lex.end(), less);
+  sort_in_parallel(lex, less, team);
 
   // Distinct points in lexicographic order: their position is their rank.
   std::vector<std::int64_t> distinct;
@@ -108,7 +139,7 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
     std::copy_n(input.point(static_cast<std::size_t>(distinct[r])), d, by_rank.begin() + static_cast<std::ptrdiff_t>(r * static_cast<std::size_t>(d)));
   store.scaled = scale_by_power_of_two(by_rank);
   mark_dyadic(by_rank, store);
-  store.tree.build(by_rank.data(), store.size, d, leaf_size);
+  store.tree.build(by_rank.data(), store.size, d, leaf_size, team.threads());
   const std::vector<std::int32_t>& order = store.tree.order();
   store.coords.resize(by_rank.size());
   store.rank.resize(distinct.size());

@@ -28,8 +28,10 @@ class KdTree {
   };
 
   // Builds the tree over `n` points of dimension `dim` (row-major `coords`). Returns nothing;
-  // order() then gives, for each tree position, the index of the point in `coords`.
-  void build(const double* coords, std::int32_t n, int dim, int leaf_size = 8);
+  // order() then gives, for each tree position, the index of the point in `coords`. With
+  // threads > 1 the two subtrees of the top nodes are built at the same time; the tree is the
+  // same for every thread count.
+  void build(const double* coords, std::int32_t n, int dim, int leaf_size = 8, int threads = 1);
 
   const std::vector<std::int32_t>& order() const { return order_; }
   const std::vector<Node>& nodes() const { return nodes_; }
@@ -48,7 +50,10 @@ class KdTree {
   std::uint64_t search(Visitor& visitor) const;
 
  private:
-  std::int32_t build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size);
+  // Appends the subtree over [begin, end) to `nodes` and `boxes` (right-child indices relative
+  // to those vectors); splits `forks` levels deep into parallel halves.
+  std::int32_t build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size, int forks,
+                          std::vector<Node>& nodes, std::vector<double>& boxes);
   bool meets(std::int32_t node, const double* lo, const double* hi) const {
     const double* a = lower(node);
     const double* b = upper(node);
