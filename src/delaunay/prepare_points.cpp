@@ -33,33 +33,63 @@ void check_input(PointsView input) {
 // is exact unless it leaves the normal range. Bringing the largest magnitude near 1 keeps the
 // squared norms of the lifted rows away from overflow (coordinates near 1e300) and underflow
 // (near 1e-300), where the floating-point filters cannot decide and every test would be exact.
-bool scale_by_power_of_two(std::vector<double>& coords) {
-  double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
-  for (double x : coords) {
-    if (x == 0.0) continue;
-    largest = std::max(largest, std::fabs(x));
-    smallest = std::min(smallest, std::fabs(x));
-  }
+// Runs body(begin, end) over consecutive ranges covering [0, n), on the team's threads when n
+// is large; returns the ranges' count (body gets its range's index too).
+template <class Body>
+std::size_t for_ranges(std::size_t n, Team& team, Body body) {
+  constexpr std::size_t kMinRange = std::size_t{1} << 16;
+  const std::size_t ranges = std::max<std::size_t>(1, std::min(static_cast<std::size_t>(team.threads()) * 4, n / kMinRange));
+  team.for_each(ranges, [&](std::size_t i) { body(i, n * i / ranges, n * (i + 1) / ranges); });
+  return ranges;
+}
+
+bool scale_by_power_of_two(std::vector<double>& coords, Team& team) {
+  // Minimum and maximum are exact: the split does not change them.
+  std::vector<double> largest_of(team.threads() * 4 + 1, 0.0), smallest_of(largest_of.size(), std::numeric_limits<double>::infinity());
+  const std::size_t ranges = for_ranges(coords.size(), team, [&](std::size_t i, std::size_t begin, std::size_t end) {
+    double large = 0.0, small = std::numeric_limits<double>::infinity();  // locals: the threads' slots share a line
+    for (std::size_t j = begin; j < end; ++j) {
+      const double x = coords[j];
+      if (x == 0.0) continue;
+      large = std::max(large, std::fabs(x));
+      small = std::min(small, std::fabs(x));
+    }
+    largest_of[i] = large;
+    smallest_of[i] = small;
+  });
+  const double largest = *std::max_element(largest_of.begin(), largest_of.begin() + static_cast<std::ptrdiff_t>(ranges));
+  const double smallest = *std::min_element(smallest_of.begin(), smallest_of.begin() + static_cast<std::ptrdiff_t>(ranges));
   if (largest == 0.0) return true;
   int exponent = 0;
   std::frexp(largest, &exponent);
   // ldexp shifts each value exactly, even when 2^-exponent itself is not a double (inputs
   // below 2^-1022).
   if (std::ldexp(smallest, -exponent) < std::numeric_limits<double>::min()) return false;  // would lose the smallest
-  for (double& x : coords) x = std::ldexp(x, -exponent);
+  for_ranges(coords.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t j = begin; j < end; ++j) coords[j] = std::ldexp(coords[j], -exponent);
+  });
   return true;
 }
 
 // Finds the common power-of-two unit of all coordinates; a dyadic point set has its largest
 // magnitude below 2^50 units, so that every difference of two coordinates is exact.
-void mark_dyadic(const std::vector<double>& coords, PointStore& store) {
-  int unit = std::numeric_limits<int>::max();
-  double largest = 0.0;
-  for (double x : coords) {
-    if (x == 0.0) continue;
-    unit = std::min(unit, geometry::lowest_bit_exponent(x));
-    largest = std::max(largest, std::fabs(x));
-  }
+void mark_dyadic(const std::vector<double>& coords, PointStore& store, Team& team) {
+  std::vector<int> unit_of(team.threads() * 4 + 1, std::numeric_limits<int>::max());
+  std::vector<double> largest_of(unit_of.size(), 0.0);
+  const std::size_t ranges = for_ranges(coords.size(), team, [&](std::size_t i, std::size_t begin, std::size_t end) {
+    int low = std::numeric_limits<int>::max();
+    double large = 0.0;
+    for (std::size_t j = begin; j < end; ++j) {
+      const double x = coords[j];
+      if (x == 0.0) continue;
+      low = std::min(low, geometry::lowest_bit_exponent(x));
+      large = std::max(large, std::fabs(x));
+    }
+    unit_of[i] = low;
+    largest_of[i] = large;
+  });
+  const int unit = *std::min_element(unit_of.begin(), unit_of.begin() + static_cast<std::ptrdiff_t>(ranges));
+  const double largest = *std::max_element(largest_of.begin(), largest_of.begin() + static_cast<std::ptrdiff_t>(ranges));
   store.unit_exponent = unit;
   store.dyadic = unit != std::numeric_limits<int>::max() && largest < std::ldexp(1.0, 50 + unit);
 }
@@ -135,22 +165,26 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   store.dim = d;
   store.size = static_cast<std::int32_t>(distinct.size());
   std::vector<double> by_rank(distinct.size() * static_cast<std::size_t>(d));
-  for (std::size_t r = 0; r < distinct.size(); ++r)
-    std::copy_n(input.point(static_cast<std::size_t>(distinct[r])), d, by_rank.begin() + static_cast<std::ptrdiff_t>(r * static_cast<std::size_t>(d)));
-  store.scaled = scale_by_power_of_two(by_rank);
-  mark_dyadic(by_rank, store);
+  for_ranges(distinct.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r < end; ++r)
+      std::copy_n(input.point(static_cast<std::size_t>(distinct[r])), d, by_rank.begin() + static_cast<std::ptrdiff_t>(r * static_cast<std::size_t>(d)));
+  });
+  store.scaled = scale_by_power_of_two(by_rank, team);
+  mark_dyadic(by_rank, store, team);
   store.tree.build(by_rank.data(), store.size, d, leaf_size, team.threads());
   const std::vector<std::int32_t>& order = store.tree.order();
   store.coords.resize(by_rank.size());
   store.rank.resize(distinct.size());
   store.input_index.resize(distinct.size());
-  for (std::size_t id = 0; id < order.size(); ++id) {
-    const auto r = static_cast<std::size_t>(order[id]);
-    std::copy_n(by_rank.begin() + static_cast<std::ptrdiff_t>(r * static_cast<std::size_t>(d)), d,
-                store.coords.begin() + static_cast<std::ptrdiff_t>(id * static_cast<std::size_t>(d)));
-    store.rank[id] = static_cast<std::int64_t>(r);
-    store.input_index[id] = distinct[r];
-  }
+  for_ranges(order.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t id = begin; id < end; ++id) {
+      const auto r = static_cast<std::size_t>(order[id]);
+      std::copy_n(by_rank.begin() + static_cast<std::ptrdiff_t>(r * static_cast<std::size_t>(d)), d,
+                  store.coords.begin() + static_cast<std::ptrdiff_t>(id * static_cast<std::size_t>(d)));
+      store.rank[id] = static_cast<std::int64_t>(r);
+      store.input_index[id] = distinct[r];
+    }
+  });
   return store;
 }
 
