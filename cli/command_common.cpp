@@ -25,6 +25,11 @@ std::string word_of(double value) {
 
 }  // namespace
 
+int threads_option(const Arguments& arguments) {
+  if (!arguments.has("threads")) return 0;
+  return static_cast<int>(parse_integer_argument("--threads", arguments.value_or("threads", ""), 0, 1024));
+}
+
 bool standard_input_has_points() {
   return !isatty(STDIN_FILENO) && std::cin.peek() != std::char_traits<char>::eof();
 }

@@ -26,6 +26,10 @@ Box parse_box(const std::string& text, int dim);
 // done or any file written: a run that cannot draw its picture writes nothing.
 void expect_svg_dimension(const Arguments& arguments, int dim);
 
+// The --threads value (Options::threads): 0 (every hardware thread, the default) or a count up
+// to 1024. Throws UsageError "--threads must be an integer from 0 to 1024, got 'text'".
+int threads_option(const Arguments& arguments);
+
 // Throws UsageError when two output options name the same file (other than none).
 void expect_distinct_outputs(const Arguments& arguments, const std::vector<const char*>& options,
                              const std::string& main_output);

@@ -20,7 +20,8 @@ namespace {
 
 const std::vector<OptionSpec> kOptions = {
     {"output", 'o', true}, {"format", 0, true},  {"neighbors", 0, true}, {"svg", 0, true},
-    {"circles", 0, false}, {"stats", 0, false}, {"variant", 0, true},   {"quiet", 'q', false},
+    {"circles", 0, false}, {"stats", 0, false}, {"variant", 0, true},   {"threads", 0, true},
+    {"quiet", 'q', false},
 };
 
 int triangulate_file(const std::string& input, const Arguments& arguments) {
@@ -31,6 +32,7 @@ int triangulate_file(const std::string& input, const Arguments& arguments) {
   const bool quiet = arguments.has("quiet");
   Options options;
   options.search = search_variant(arguments.value_or("variant", "full"));
+  options.threads = threads_option(arguments);
   options.compute_neighbors = arguments.has("neighbors") || format != OutputFormat::Qhull;
 
   const PointCloud points = read_points(input);
@@ -85,6 +87,8 @@ std::string delaunay_help() {
          search_variant_names() +
          "\n"
          "                        (default full)\n"
+         "      --threads N       threads to use (default 0: one per core); the output is the\n"
+         "                        same for every N\n"
          "  -q, --quiet           no progress line, no report of duplicate points\n"
          "  -h, --help            show this text\n"
          "\n"
@@ -123,7 +127,7 @@ int run_delaunay(const std::vector<std::string>& args) {
         throw UsageError(std::string("--") + option + " needs an INPUT file (without INPUT, a demonstration runs)");
       }
     }
-    return run_delaunay_demo(arguments.value_or("variant", "full"), arguments.has("stats"));
+    return run_delaunay_demo(arguments.value_or("variant", "full"), threads_option(arguments), arguments.has("stats"));
   }
   return triangulate_file(arguments.positionals[0], arguments);
 }

@@ -22,7 +22,7 @@ namespace {
 const std::vector<OptionSpec> kOptions = {
     {"output", 'o', true}, {"format", 0, true},    {"ridges", 0, true}, {"cells", 0, true},
     {"box", 0, true},      {"svg", 0, true},       {"circles", 0, false}, {"no-volumes", 0, false},
-    {"stats", 0, false},   {"variant", 0, true},   {"quiet", 'q', false},
+    {"stats", 0, false},   {"variant", 0, true},   {"threads", 0, true}, {"quiet", 'q', false},
 };
 
 bool needs_cells(OutputFormat format) { return format == OutputFormat::Vtu || format == OutputFormat::Off; }
@@ -42,11 +42,13 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
     throw UsageError("--box clips the cells, which Qhull's layout does not hold: add --cells FILE, or choose "
                      "--format json, npz, vtu or off");
   const bool quiet = arguments.has("quiet");
+  const int threads = threads_option(arguments);
 
   const PointCloud points = read_points(input);
   expect_svg_dimension(arguments, points.dim);
   Options options;
   options.search = search_variant(arguments.value_or("variant", "full"));
+  options.threads = threads;
   options.progress = make_progress_reporter(points.size(), points.dim, quiet);
   const Triangulation triangulation = delaunay(points, options);
   if (!triangulation.duplicates.empty() && !quiet)
@@ -107,6 +109,8 @@ std::string voronoi_help() {
          "      --no-volumes      skip the volumes of the bounded cells (costly for d >= 6)\n"
          "      --stats           print the run's statistics (key=value) to standard error\n"
          "      --variant NAME    the Delaunay search variant (see drange delaunay --help)\n"
+         "      --threads N       threads for the triangulation (default 0: one per core); the\n"
+         "                        output is the same for every N\n"
          "  -q, --quiet           no progress line, no report of duplicate points\n"
          "  -h, --help            show this text\n"
          "\n"

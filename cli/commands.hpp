@@ -26,6 +26,6 @@ std::string general_help();
 std::string exit_codes_help();
 
 // Runs the built-in demonstration of `drange delaunay` without INPUT.
-int run_delaunay_demo(const std::string& variant, bool print_stats);
+int run_delaunay_demo(const std::string& variant, int threads, bool print_stats);
 
 }  // namespace drange::cli

@@ -33,6 +33,7 @@ void print_summary(const Statistics& stats) {
   print_row("points", std::to_string(stats.points) + " (" + std::to_string(stats.distinct_points) + " distinct)");
   print_row("simplices", std::to_string(stats.simplices));
   print_row("hull facets", std::to_string(stats.hull_facets));
+  print_row("threads", std::to_string(stats.threads));
   print_row("kd-tree", format("%.3f s", stats.seconds_kdtree));
   print_row("first facet", format("%.3f s", stats.seconds_first_facet));
   print_row("search", format("%.3f s", stats.seconds_search) + "  (with the neighbours)");
@@ -48,9 +49,10 @@ void print_summary(const Statistics& stats) {
 
 }  // namespace
 
-int run_delaunay_demo(const std::string& variant, bool print_stats) {
+int run_delaunay_demo(const std::string& variant, int threads, bool print_stats) {
   Options options;
   options.search = search_variant(variant);
+  options.threads = threads;
   options.compute_neighbors = true;
   std::printf("No INPUT given: triangulating %zu uniform random points in the unit cube, %dD, seed %llu.\n\n",
               kDemoPoints, kDemoDimension, static_cast<unsigned long long>(kDemoSeed));

@@ -49,7 +49,7 @@ TEST(Cli, GeneralHelp) {
 TEST(Cli, HelpForEachCommand) {
   TempDir dir;
   const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
-      {"delaunay", {"--output", "--neighbors", "--stats", "--variant", "--quiet", "full, scan"}},
+      {"delaunay", {"--output", "--neighbors", "--stats", "--variant", "--threads", "--quiet", "full, scan"}},
       {"check", {"--quiet", "qdelaunay i"}},
       {"generate", {"--seed", "--output", "uniform", "ball", "sphere", "gaussian", "clustered", "grid"}},
   };
@@ -297,6 +297,42 @@ TEST(Cli, DelaunayStatsAndVariant) {
   EXPECT_EQ(run.code, 2);
   EXPECT_TRUE(contains(run.err, "fastest")) << run.err;
   EXPECT_TRUE(contains(run.err, "Try 'drange delaunay --help'."));
+}
+
+// --threads changes nothing in the output: the same bytes for the simplices, the neighbours and
+// the Voronoi diagram.
+TEST(Cli, ThreadsGiveTheSameBytes) {
+  TempDir dir;
+  ASSERT_EQ(run_cli(dir, {"generate", "uniform", "20000", "2", "-o", dir.file("p.txt")}).code, 0);
+  for (const char* threads : {"1", "2", "5"}) {
+    const std::string t = threads;
+    CliRun run = run_cli(dir, {"delaunay", dir.file("p.txt"), "-o", dir.file("s" + t + ".txt"), "--neighbors",
+                               dir.file("n" + t + ".txt"), "--threads", threads});
+    ASSERT_EQ(run.code, 0) << run.err;
+    run = run_cli(dir, {"voronoi", dir.file("p.txt"), "-o", dir.file("v" + t + ".json"), "--threads=" + t});
+    ASSERT_EQ(run.code, 0) << run.err;
+  }
+  for (const char* threads : {"2", "5"}) {
+    const std::string t = threads;
+    EXPECT_EQ(read_text(dir.file("s" + t + ".txt")), read_text(dir.file("s1.txt"))) << "--threads " << t;
+    EXPECT_EQ(read_text(dir.file("n" + t + ".txt")), read_text(dir.file("n1.txt"))) << "--threads " << t;
+    EXPECT_EQ(read_text(dir.file("v" + t + ".json")), read_text(dir.file("v1.json"))) << "--threads " << t;
+  }
+  const CliRun stats = run_cli(dir, {"delaunay", dir.file("p.txt"), "-o", dir.file("s.txt"), "--stats", "--threads", "3"});
+  EXPECT_TRUE(contains(stats.err, " threads=3 ")) << stats.err;
+}
+
+TEST(Cli, BadThreadCountIsAUsageError) {
+  TempDir dir;
+  write_text(dir.file("p.txt"), kSquareWithCentre);
+  for (const std::string command : {"delaunay", "voronoi"}) {
+    for (const std::string value : {"-1", "two", "2x", "", "1025", "1.5"}) {
+      const CliRun run = run_cli(dir, {command, dir.file("p.txt"), "--threads", value});
+      EXPECT_EQ(run.code, 2) << command << " --threads '" << value << "'";
+      EXPECT_EQ(run.err, "drange: --threads must be an integer from 0 to 1024, got '" + value + "'\nTry 'drange " +
+                             command + " --help'.\n");
+    }
+  }
 }
 
 TEST(Cli, DelaunayReportsDuplicates) {

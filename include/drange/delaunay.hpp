@@ -52,6 +52,12 @@ struct Options {
   // or repeats the previous count. The CLI draws its progress line with it. It may throw to
   // abandon the run: delaunay() then throws that exception. Empty: never called.
   std::function<void(std::size_t simplices)> progress;
+  // Threads to use: 0 means one per hardware thread (std::thread::hardware_concurrency), 1 the
+  // serial run. The result, simplex numbers and statistics included (except the times and
+  // Statistics::wasted_searches), is the same for every count. With more than one, the facets'
+  // searches run on helper threads, ahead of the calling thread, which records the simplices
+  // in the serial order and is the only one that calls `progress`.
+  int threads = 0;
 };
 
 // One input point that is an exact copy of an earlier one; it is left out of the triangulation.
@@ -70,6 +76,9 @@ struct Statistics {
   std::size_t candidates = 0;        // times a search's candidate point was set or improved
   std::size_t exact_fallbacks = 0;   // decisions the floating-point filter could not take
   std::size_t max_open_facets = 0;   // the largest frontier held in the facet table
+  std::size_t threads = 1;           // threads used (Options::threads resolved)
+  std::size_t wasted_searches = 0;   // searches run ahead by a thread for a facet closed before its turn;
+                                     // not counted in search_calls, points_tested, candidates, exact_fallbacks
   double seconds_kdtree = 0;         // building the kd-tree (including sorting and deduplication)
   double seconds_first_facet = 0;    // gift wrapping to the first facet
   double seconds_search = 0;         // the main loop: searches, facet table, simplices and neighbours
@@ -102,7 +111,8 @@ struct Triangulation {
 // cospherical points are broken by a symbolic perturbation that depends only on the
 // coordinates, so any permutation of the input gives the same simplices.
 // Throws InputError (NaN/infinite coordinate, a dimension outside 2..11, 2^31 points or more) or DegenerateInputError
-// (fewer than d+1 distinct points, or all points in one hyperplane).
+// (fewer than d+1 distinct points, or all points in one hyperplane); UsageError for a negative
+// Options::threads.
 Triangulation delaunay(PointsView points, const Options& options = {});
 
 }  // namespace drange

@@ -36,7 +36,7 @@ Options engine_options(const std::string& variant, int threads, PythonProgress& 
   if (threads < 0) throw py::value_error("threads must be 0 (all cores) or positive; got " + std::to_string(threads));
   Options options;
   options.search = search_variant(variant);
-  // options.threads = threads;  // THREADS-MERGE
+  options.threads = threads;
   options.progress = progress.hook();
   return options;
 }
@@ -53,7 +53,8 @@ py::dict statistics_dict(const Statistics& s) {
   d["candidates"] = s.candidates;
   d["exact_fallbacks"] = s.exact_fallbacks;
   d["max_open_facets"] = s.max_open_facets;
-  // d["threads"] = s.threads;  // THREADS-MERGE
+  d["threads"] = s.threads;
+  d["wasted_searches"] = s.wasted_searches;
   d["seconds_kdtree"] = s.seconds_kdtree;
   d["seconds_first_facet"] = s.seconds_first_facet;
   d["seconds_search"] = s.seconds_search;

@@ -14,10 +14,13 @@
 
 namespace drange::engine {
 
-// Where a facet was seen: the simplex, and the index (0..d) of the vertex opposite the facet.
+// Where a facet was seen: the simplex, and the index (0..d) of the vertex opposite the facet;
+// and the facet's place in the driver's queue (the number of facets queued before it), so that
+// closing it can mark it there (triangulate.cpp).
 struct FacetOwner {
   std::int32_t simplex;
   std::int32_t face;
+  std::int64_t entry = -1;
 };
 
 class FacetTable {
@@ -46,17 +49,20 @@ class FacetTable {
     h *= 0xBF58476D1CE4E5B9ull;
     return h ^ (h >> 32);
   }
-  std::size_t stride() const { return static_cast<std::size_t>(d_) + 2; }
+  std::size_t stride() const { return static_cast<std::size_t>(d_) + 4; }
   std::int32_t* slot_ids(std::size_t slot) { return &slots_[slot * stride()]; }
   const std::int32_t* slot_ids(std::size_t slot) const { return &slots_[slot * stride()]; }
   FacetOwner owner(std::size_t slot) const {
     const std::int32_t* s = slot_ids(slot) + d_;
-    return FacetOwner{s[0], s[1]};
+    const auto entry = static_cast<std::int64_t>((std::uint64_t(std::uint32_t(s[3])) << 32) | std::uint32_t(s[2]));
+    return FacetOwner{s[0], s[1], entry};
   }
   void set_owner(std::size_t slot, FacetOwner owner) {
     std::int32_t* s = slot_ids(slot) + d_;
     s[0] = owner.simplex;
     s[1] = owner.face;
+    s[2] = static_cast<std::int32_t>(static_cast<std::uint32_t>(static_cast<std::uint64_t>(owner.entry)));
+    s[3] = static_cast<std::int32_t>(static_cast<std::uint32_t>(static_cast<std::uint64_t>(owner.entry) >> 32));
   }
   bool empty(std::size_t slot) const { return slots_[slot * stride()] < 0; }
   bool equal(std::size_t slot, const std::int32_t* ids) const {
@@ -72,7 +78,8 @@ class FacetTable {
   int d_;
   std::size_t mask_ = 0;
   std::size_t size_ = 0;
-  // capacity slots of d + 2 ints: the ids (-1 in the first marks an empty slot), then the owner.
+  // capacity slots of d + 4 ints: the ids (-1 in the first marks an empty slot), then the owner
+  // (simplex, face, and the queue entry's low and high halves).
   std::vector<std::int32_t> slots_;
 };
 

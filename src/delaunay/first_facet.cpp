@@ -47,9 +47,26 @@ int affine_dimension(const PointStore& points) {
                              " dimensions needs points that span " + std::to_string(points.dim) + " dimensions");
 }
 
+// The scans over all points (gift wrapping's steps, the check of the hyperplane found) run on
+// chunks of this many ids, on the team's threads, and their results are combined in chunk
+// order. The chunks are the same for every thread count, so the predicates evaluated, and
+// the exact fallbacks counted, are too.
+constexpr std::size_t kScanChunk = std::size_t{1} << 15;
+
+template <class Result, class Scan>
+std::vector<Result> scan_in_chunks(const Ids& ids, Team& team, Scan scan) {
+  const std::size_t chunks = std::max<std::size_t>(1, (ids.size() + kScanChunk - 1) / kScanChunk);
+  std::vector<Result> results(chunks);
+  team.for_each(chunks, [&](std::size_t c) {
+    const std::int32_t* first = ids.data() + c * kScanChunk;
+    results[c] = scan(first, ids.data() + std::min(ids.size(), (c + 1) * kScanChunk));
+  });
+  return results;
+}
+
 class Wrapper {
  public:
-  explicit Wrapper(const PointStore& points) : points_(points), d_(points.dim) {}
+  Wrapper(const PointStore& points, Team& team) : points_(points), d_(points.dim), team_(team) {}
 
   struct Support {
     Ids facet;                 // k ids, a Delaunay simplex of the points on the hyperplane
@@ -64,18 +81,34 @@ class Wrapper {
   Ids simplex_in_flat(const Ids& ids, const Axes& axes);
 
  private:
+  // What one chunk of ids says in a step of gift wrapping, and in the check of the hyperplane.
+  struct StepScan {
+    std::int32_t on_hyperplane = -1;  // the first point on F_{j-1} and off G: the step's answer
+    int side = 0;                     // the side of F_{j-1} of the chunk's other points
+    std::int32_t best = -1;           // the first of them that is furthest in the rotation
+  };
+  struct SupportScan {
+    Ids on;                 // the points on H, in order
+    int side = 0;           // the side of H of the others
+    std::int32_t off = -1;  // the first of them
+  };
+
   // Orientation in the frame of the first k of `axes`, based at `base`, of the k given points.
-  int orient(const int* axes, int k, std::int32_t base, const Ids& others) {
-    pointers_.clear();
-    for (std::int32_t id : others) pointers_.push_back(points_.point(id));
+  int orient(const int* axes, int k, std::int32_t base, const Ids& others, std::vector<const double*>& scratch) const {
+    scratch.clear();
+    for (std::int32_t id : others) scratch.push_back(points_.point(id));
     const geometry::Frame frame{d_, k, axes, points_.point(base)};
-    return geometry::orientation(frame, pointers_.data());
+    return geometry::orientation(frame, scratch.data());
   }
+  int orient(const int* axes, int k, std::int32_t base, const Ids& others) { return orient(axes, k, base, others, pointers_); }
   std::int32_t gift_wrap_step(const Ids& ids, const Axes& axes, const Ids& found);
+  StepScan scan_step(const std::int32_t* first, const std::int32_t* last, const Axes& axes, const Ids& found) const;
+  SupportScan scan_support(const std::int32_t* first, const std::int32_t* last, const Axes& axes, const Ids& found) const;
   std::int32_t lexicographic_minimum(const Ids& ids, const Axes& axes) const;
 
   const PointStore& points_;
   int d_;
+  Team& team_;
   std::vector<const double*> pointers_;
 };
 
@@ -94,6 +127,34 @@ std::int32_t Wrapper::lexicographic_minimum(const Ids& ids, const Axes& axes) co
 // about the flat G spanned by the found points and axes j+1..k-1 (dropping axis j), we return a
 // point v such that G + v is again a supporting hyperplane.
 std::int32_t Wrapper::gift_wrap_step(const Ids& ids, const Axes& axes, const Ids& found) {
+  const std::vector<StepScan> chunks = scan_in_chunks<StepScan>(
+      ids, team_, [&](const std::int32_t* first, const std::int32_t* last) { return scan_step(first, last, axes, found); });
+  const int j = static_cast<int>(found.size());
+  Ids rotation_rows(found.begin() + 1, found.end());
+  rotation_rows.push_back(-1);
+  rotation_rows.push_back(-1);
+  int side = 0;
+  std::int32_t best = -1;
+  for (const StepScan& chunk : chunks) {
+    if (chunk.side != 0 && side != 0 && chunk.side != side)
+      throw std::logic_error("gift wrapping: the previous hyperplane is not supporting");
+    if (side == 0) side = chunk.side;
+    if (chunk.on_hyperplane >= 0) return chunk.on_hyperplane;
+    if (chunk.best < 0) continue;
+    if (best < 0) {
+      best = chunk.best;
+      continue;
+    }
+    // As in scan_step: strictly further in the rotation, so that the first of equals stays.
+    rotation_rows[static_cast<std::size_t>(j - 1)] = best;
+    rotation_rows[static_cast<std::size_t>(j)] = chunk.best;
+    if (side * orient(axes.data(), j + 1, found[0], rotation_rows) > 0) best = chunk.best;
+  }
+  return best;
+}
+
+Wrapper::StepScan Wrapper::scan_step(const std::int32_t* first, const std::int32_t* last, const Axes& axes,
+                                     const Ids& found) const {
   const int j = static_cast<int>(found.size());
   const std::int32_t v0 = found[0];
   Ids rows(found.begin() + 1, found.end());
@@ -101,11 +162,12 @@ std::int32_t Wrapper::gift_wrap_step(const Ids& ids, const Axes& axes, const Ids
   Ids rotation_rows = rows;
   rotation_rows.push_back(-1);
   Axes without(static_cast<std::size_t>(j));
-  int side = 0;
-  std::int32_t best = -1;
-  for (std::int32_t x : ids) {
+  std::vector<const double*> scratch;
+  StepScan scan;
+  for (const std::int32_t* it = first; it != last; ++it) {
+    const std::int32_t x = *it;
     rows.back() = x;
-    const int o = orient(axes.data(), j, v0, rows);  // the side of F_{j-1}
+    const int o = orient(axes.data(), j, v0, rows, scratch);  // the side of F_{j-1}
     if (o == 0) {
       // x on F_{j-1}: G + x is F_{j-1} itself in the rotation plane, hence supporting, unless x
       // lies in G, which it does exactly when every j x j minor over the first j+1 axes vanishes.
@@ -113,23 +175,50 @@ std::int32_t Wrapper::gift_wrap_step(const Ids& ids, const Axes& axes, const Ids
         std::size_t w = 0;
         for (int i = 0; i <= j; ++i)
           if (i != c) without[w++] = axes[static_cast<std::size_t>(i)];
-        if (orient(without.data(), j, v0, rows) != 0) return x;
+        if (orient(without.data(), j, v0, rows, scratch) != 0) {
+          scan.on_hyperplane = x;
+          return scan;
+        }
       }
       continue;
     }
-    if (side == 0) side = o;
-    if (o != side) throw std::logic_error("gift wrapping: the previous hyperplane is not supporting");
-    if (best < 0) {
-      best = x;
+    if (scan.side == 0) scan.side = o;
+    if (o != scan.side) throw std::logic_error("gift wrapping: the previous hyperplane is not supporting");
+    if (scan.best < 0) {
+      scan.best = x;
       continue;
     }
     // All candidates lie strictly on one side of F_{j-1}, within less than half a turn: the
     // rotation order is the orientation of (G, best, x) in the first j+1 axes.
-    rotation_rows[static_cast<std::size_t>(j - 1)] = best;
+    rotation_rows[static_cast<std::size_t>(j - 1)] = scan.best;
     rotation_rows[static_cast<std::size_t>(j)] = x;
-    if (side * orient(axes.data(), j + 1, v0, rotation_rows) > 0) best = x;
+    if (scan.side * orient(axes.data(), j + 1, v0, rotation_rows, scratch) > 0) scan.best = x;
   }
-  return best;
+  return scan;
+}
+
+Wrapper::SupportScan Wrapper::scan_support(const std::int32_t* first, const std::int32_t* last, const Axes& axes,
+                                           const Ids& found) const {
+  const int k = static_cast<int>(axes.size());
+  Ids rows(found.begin() + 1, found.end());
+  rows.push_back(-1);
+  std::vector<const double*> scratch;
+  SupportScan scan;
+  for (const std::int32_t* it = first; it != last; ++it) {
+    const std::int32_t x = *it;
+    rows.back() = x;
+    const int o = orient(axes.data(), k, found[0], rows, scratch);
+    if (o == 0) {
+      scan.on.push_back(x);
+      continue;
+    }
+    if (scan.side == 0) {
+      scan.side = o;
+      scan.off = x;
+    }
+    if (o != scan.side) throw std::logic_error("gift wrapping: the hyperplane found is not supporting");
+  }
+  return scan;
 }
 
 Wrapper::Support Wrapper::supporting_facet(const Ids& ids, const Axes& axes) {
@@ -143,30 +232,26 @@ Wrapper::Support Wrapper::supporting_facet(const Ids& ids, const Axes& axes) {
   // The points on H = aff(found), and one point off it; H must support all of them.
   Support support;
   Ids on;
-  Ids rows(found.begin() + 1, found.end());
-  rows.push_back(-1);
   int side = 0;
-  for (std::int32_t x : ids) {
-    rows.back() = x;
-    const int o = orient(axes.data(), k, found[0], rows);
-    if (o == 0) {
-      on.push_back(x);
-      continue;
-    }
+  for (SupportScan& chunk : scan_in_chunks<SupportScan>(ids, team_, [&](const std::int32_t* first, const std::int32_t* last) {
+         return scan_support(first, last, axes, found);
+       })) {
+    on.insert(on.end(), chunk.on.begin(), chunk.on.end());
+    if (chunk.side == 0) continue;
     if (side == 0) {
-      side = o;
-      support.off = x;
+      side = chunk.side;
+      support.off = chunk.off;
     }
-    if (o != side) throw std::logic_error("gift wrapping: the hyperplane found is not supporting");
+    if (chunk.side != side) throw std::logic_error("gift wrapping: the hyperplane found is not supporting");
   }
   if (side == 0) throw_flat(points_);
+  Ids rows(found.begin() + 1, found.end());
   if (static_cast<int>(on.size()) == k) {
     support.facet = found;
     return support;
   }
   // Several points on H: a Delaunay simplex among them, in k-1 axes onto which H projects
   // one-to-one (those whose normal component, a (k-1)-minor, is nonzero).
-  rows.pop_back();
   for (int drop = 0; drop < k; ++drop) {
     Axes sub;
     for (int i = 0; i < k; ++i)
@@ -222,12 +307,12 @@ Ids Wrapper::simplex_in_flat(const Ids& ids, const Axes& axes) {
 
 }  // namespace
 
-FirstFacet find_first_facet(const PointStore& points) {
+FirstFacet find_first_facet(const PointStore& points, Team& team) {
   Ids all(static_cast<std::size_t>(points.size));
   std::iota(all.begin(), all.end(), 0);
   Axes axes(static_cast<std::size_t>(points.dim));
   std::iota(axes.begin(), axes.end(), 0);
-  Wrapper wrapper(points);
+  Wrapper wrapper(points, team);
   Wrapper::Support support = wrapper.supporting_facet(all, axes);
   FirstFacet first;
   first.ids = support.facet;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "delaunay/point_store.hpp"
+#include "delaunay/team.hpp"
 
 namespace drange::engine {
 
@@ -26,7 +27,8 @@ struct FirstFacet {
 };
 
 // Throws DegenerateInputError when the points do not span E^d (the message gives the
-// dimension of their affine hull).
-FirstFacet find_first_facet(const PointStore& points);
+// dimension of their affine hull). The scans over all points use the team's threads; the
+// facet, and the predicates evaluated, are the same for every thread count.
+FirstFacet find_first_facet(const PointStore& points, Team& team);
 
 }  // namespace drange::engine

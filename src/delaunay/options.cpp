@@ -24,15 +24,17 @@ SearchOptions search_variant(const std::string& name) {
 const char* search_variant_names() { return "full, scan, kdtree, no-prune, no-order, paper, no-bottom-up, no-seed, no-ball"; }
 
 std::string Statistics::summary() const {
-  char line[640];
+  char line[720];
   std::snprintf(line, sizeof line,
                 "points=%zu distinct=%zu simplices=%zu hull_facets=%zu calls_per_simplex=%.2f "
                 "tested_per_simplex=%.2f candidates_per_simplex=%.2f exact_fallbacks=%zu max_open_facets=%zu "
+                "threads=%zu wasted_searches=%zu "
                 "time_kdtree=%.3fs time_first_facet=%.3fs time_search=%.3fs time_total=%.3fs peak_rss=%.1fMiB",
                 points, distinct_points, simplices, hull_facets, calls_per_simplex(),
                 simplices ? double(points_tested) / double(simplices) : 0.0,
-                simplices ? double(candidates) / double(simplices) : 0.0, exact_fallbacks, max_open_facets,
-                seconds_kdtree, seconds_first_facet, seconds_search, seconds_total, double(peak_rss_bytes) / (1 << 20));
+                simplices ? double(candidates) / double(simplices) : 0.0, exact_fallbacks, max_open_facets, threads,
+                wasted_searches, seconds_kdtree, seconds_first_facet, seconds_search, seconds_total,
+                double(peak_rss_bytes) / (1 << 20));
   return line;
 }
 

@@ -4,13 +4,15 @@
 #include <vector>
 
 #include "delaunay/point_store.hpp"
+#include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
 
 namespace drange::engine {
 
 // Checks the input (dimension, finite coordinates; throws InputError/UsageError), finds exact
 // duplicates (reported, left out), ranks the distinct points lexicographically and stores them
-// in kd-tree order. Throws DegenerateInputError with fewer than d+1 distinct points.
-PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates);
+// in kd-tree order. Throws DegenerateInputError with fewer than d+1 distinct points. The sort
+// and the kd-tree use the team's threads; the result is the same for every thread count.
+PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates, Team& team);
 
 }  // namespace drange::engine

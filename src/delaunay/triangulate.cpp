@@ -5,13 +5,21 @@
 //   3. for each open facet, the point that closes it into a Delaunay simplex (facet_search.hpp);
 //   4. each new simplex is recorded, positively oriented; its other facets are opened, or closed
 //      when already open, and closing a facet links the two simplices as neighbours (2.5).
+// With Options::threads > 1, step 3 runs ahead on helper threads (SearchPipeline below), and
+// the sort, the kd-tree and the first facet's scans are split between the threads; steps 2
+// and 4 stay on the calling thread, in the serial order, so the output does not change.
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
-#include <deque>
+#include <condition_variable>
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
+#include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -19,7 +27,9 @@
 #include "delaunay/facet_table.hpp"
 #include "delaunay/first_facet.hpp"
 #include "delaunay/prepare_points.hpp"
+#include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
+#include "drange/errors.hpp"
 #include "geometry/predicates.hpp"
 
 namespace drange {
@@ -45,50 +55,61 @@ int sort_with_parity(std::int32_t* ids, int n) {
   return parity;
 }
 
-// The open facets waiting for their search: sorted ids, the owner, and the open side. Entries
-// of d + 3 ints in blocks of kBlock entries: O(1) per push and pop, and a block is freed as soon
-// as it has been read, so memory follows the waiting facets (a queue of millions in 5D) without
-// the transient doubling of a growing array.
+constexpr int kMaxIds = 11;  // the largest dimension (prepare_points.cpp): scratch sizes
+
+// An open facet waiting for its turn, besides its sorted ids: the simplex that opened it
+// (owner.entry is its place in the queue), the open side, and the owner's vertex opposite it.
+struct FacetInfo {
+  engine::FacetOwner owner;
+  std::int32_t sigma;
+  std::int32_t opposite;  // -1 for the first facet
+};
+
+// The open facets in FIFO order. With threads, a facet closed while it waits is marked (sigma 0),
+// so that its turn needs no table lookup. A vector read from `head_`: the consumed front is
+// dropped when it is as long as the rest, so every facet is moved at most once on average.
 class FacetQueue {
  public:
-  explicit FacetQueue(int d) : d_(d), width_(static_cast<std::size_t>(d) + 3) {}
-  void push(const std::int32_t* ids, engine::FacetOwner owner, int sigma) {
-    if (blocks_.empty() || tail_ == kBlock) {
-      blocks_.emplace_back(kBlock * width_);
-      tail_ = 0;
-    }
-    std::int32_t* entry = &blocks_.back()[tail_ * width_];
-    std::copy(ids, ids + d_, entry);
-    entry[d_] = owner.simplex;
-    entry[d_ + 1] = owner.face;
-    entry[d_ + 2] = sigma;
-    ++tail_;
-    ++count_;
+  explicit FacetQueue(int d) : d_(d), width_(static_cast<std::size_t>(d) + 4) {}
+  void push(const std::int32_t* ids, engine::FacetOwner owner, int sigma, std::int32_t opposite) {
+    data_.insert(data_.end(), ids, ids + d_);
+    data_.push_back(owner.simplex);
+    data_.push_back(owner.face);
+    data_.push_back(sigma);
+    data_.push_back(opposite);
+    ++pushed_;
   }
-  bool empty() const { return count_ == 0; }
-  void pop(std::int32_t* ids, engine::FacetOwner& owner, int& sigma) {
-    const std::int32_t* entry = &blocks_.front()[head_ * width_];
+  bool empty() const { return head_ == data_.size(); }
+  // The place in the queue that the next push gets, and that the next pop returns.
+  std::uint64_t pushed() const { return pushed_; }
+  std::uint64_t popped() const { return popped_; }
+  // Takes the next facet: its ids and info; returns whether it was closed while it waited.
+  bool pop(std::int32_t* ids, FacetInfo& info) {
+    const std::int32_t* entry = &data_[head_];
     std::copy(entry, entry + d_, ids);
-    owner.simplex = entry[d_];
-    owner.face = entry[d_ + 1];
-    sigma = entry[d_ + 2];
-    --count_;
-    if (++head_ == kBlock || count_ == 0) {  // the front block is read (or the queue is empty)
-      blocks_.pop_front();
+    info.owner = engine::FacetOwner{entry[d_], entry[d_ + 1], static_cast<std::int64_t>(popped_)};
+    info.sigma = entry[d_ + 2];
+    info.opposite = entry[d_ + 3];
+    head_ += width_;
+    ++popped_;
+    if (head_ == data_.size()) {
+      data_.clear();
       head_ = 0;
-      if (blocks_.empty()) tail_ = 0;
+    } else if (head_ >= (std::size_t{1} << 16) && head_ >= data_.size() - head_) {
+      data_.erase(data_.begin(), data_.begin() + static_cast<std::ptrdiff_t>(head_));
+      head_ = 0;
     }
+    return info.sigma == 0;
   }
-  std::size_t size() const { return count_; }
+  // Marks the facet at place `entry` (still in the queue) closed.
+  void mark_closed(std::uint64_t entry) { data_[head_ + static_cast<std::size_t>(entry - popped_) * width_ + static_cast<std::size_t>(d_ + 2)] = 0; }
 
  private:
-  static constexpr std::size_t kBlock = 4096;
   int d_;
   std::size_t width_;
-  std::deque<std::vector<std::int32_t>> blocks_;
-  std::size_t head_ = 0;   // next entry to pop in the front block
-  std::size_t tail_ = 0;   // next free entry in the back block
-  std::size_t count_ = 0;  // waiting entries
+  std::uint64_t pushed_ = 0, popped_ = 0;
+  std::size_t head_ = 0;  // where the next facet starts in data_
+  std::vector<std::int32_t> data_;
 };
 
 // Calls Options::progress every kProgressInterval simplices, counting down so that the main
@@ -111,6 +132,442 @@ class ProgressCountdown {
   std::size_t countdown_ = kProgressInterval;
 };
 
+// The open facets (section 2.3) and the simplices found (2.5): the part of the driver that
+// every thread count shares, run by the calling thread only. Facets leave the queue in FIFO
+// order; when its turn comes, a facet is either closed already (the simplex on its other side
+// was found while it waited) or gets the result of its search, which close() records.
+class Frontier {
+ public:
+  Frontier(int d, Triangulation& result, const std::function<void(std::size_t)>& progress)
+      : d_(d),
+        width_(d + 1),
+        simplices_(result.simplices),
+        neighbors_(result.neighbors),
+        stats_(result.stats),
+        table_(d),
+        queue_(d),
+        progress_(progress),
+        other_facet_(static_cast<std::size_t>(d)) {}
+
+  void open_first(const engine::FirstFacet& first) {
+    queue_.push(first.ids.data(), engine::FacetOwner{-1, -1, 0}, first.sigma, -1);
+  }
+  bool queue_empty() const { return queue_.empty(); }
+  // Takes the next facet of the queue; returns whether it was closed while it waited.
+  bool pop(std::int32_t* ids, FacetInfo& info) { return queue_.pop(ids, info); }
+  // A facet's turn, in queue order: false when it was closed while it waited (it needs no
+  // search); otherwise it leaves the table, and close() must follow with its search's result.
+  bool take(const std::int32_t* ids, const FacetInfo& info, bool closed) {
+    stats_.max_open_facets = std::max(stats_.max_open_facets, table_.size());
+    if (closed) return false;
+    if (info.owner.simplex < 0 || table_.remove(ids)) return true;
+    if (mark_closures_) throw std::logic_error("delaunay: a queued facet is not open");
+    return false;  // closed while it waited
+  }
+  // Threads > 1: mark the facets that close while they wait (in the queue, or in
+  // closed_after_pop() once they left it). The serial loop finds them by the table lookup that
+  // take() makes anyway; marking there would write to a random place of the queue for every
+  // closure (a cache miss each on a large 3D frontier: 5% slower).
+  void mark_closures() { mark_closures_ = true; }
+  // Records the search's result for a facet that take() accepted: the apex, or -1 on the hull.
+  void close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex);
+  // Facets closed by close() that had already left the queue (threads > 1: they wait in the
+  // search window); the caller marks them and clears the list.
+  std::vector<std::uint64_t>& closed_after_pop() { return closed_after_pop_; }
+  bool table_empty() const { return table_.size() == 0; }
+  void finished(std::size_t simplices) const { progress_.finished(simplices); }
+
+ private:
+  int d_, width_;
+  std::vector<std::int32_t>& simplices_;
+  std::vector<std::int32_t>& neighbors_;
+  Statistics& stats_;
+  engine::FacetTable table_;
+  FacetQueue queue_;
+  ProgressCountdown progress_;
+  std::vector<std::int32_t> other_facet_;
+  std::vector<std::uint64_t> closed_after_pop_;
+  bool mark_closures_ = false;
+};
+
+void Frontier::close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex) {
+  if (apex < 0) {
+    ++stats_.hull_facets;
+    return;
+  }
+  const engine::FacetOwner owner = info.owner;
+  const auto width = static_cast<std::size_t>(width_);
+  // The new simplex: the facet's vertices, then the apex, whose orientation is sigma; one
+  // transposition of the first two vertices makes it positive.
+  const auto s = static_cast<std::int32_t>(simplices_.size() / width);
+  const std::size_t base = simplices_.size();
+  simplices_.insert(simplices_.end(), ids, ids + d_);
+  simplices_.push_back(apex);
+  if (info.sigma < 0) std::swap(simplices_[base], simplices_[base + 1]);
+  neighbors_.insert(neighbors_.end(), width, -1);
+  neighbors_[base + static_cast<std::size_t>(d_)] = owner.simplex;
+  if (owner.simplex >= 0) neighbors_[static_cast<std::size_t>(owner.simplex) * width + static_cast<std::size_t>(owner.face)] = s;
+  else ++stats_.hull_facets;  // the first facet lies on the hull
+  // The other facets: facet f omits vertex f. With the simplex positive, x is on the far side
+  // of facet f (its open side) where orientation with x in place of vertex f is negative.
+  for (int f = 0; f < d_; ++f) {
+    std::size_t w = 0;
+    for (int i = 0; i < width_; ++i)
+      if (i != f) other_facet_[w++] = simplices_[base + static_cast<std::size_t>(i)];
+    const int parity = sort_with_parity(other_facet_.data(), d_);
+    engine::FacetOwner seen{};
+    const engine::FacetOwner mine{s, f, static_cast<std::int64_t>(queue_.pushed())};
+    if (table_.close_or_open(other_facet_.data(), mine, &seen)) {
+      neighbors_[base + static_cast<std::size_t>(f)] = seen.simplex;
+      neighbors_[static_cast<std::size_t>(seen.simplex) * width + static_cast<std::size_t>(seen.face)] = s;
+      if (mark_closures_) {
+        const auto entry = static_cast<std::uint64_t>(seen.entry);
+        if (entry >= queue_.popped()) queue_.mark_closed(entry);
+        else closed_after_pop_.push_back(entry);
+      }
+    } else {
+      // Moving x from position f to the end takes d - f transpositions; sorting the rest
+      // multiplies by its parity. Open side: that orientation negative.
+      const int to_end = ((d_ - f) & 1) ? -1 : 1;
+      queue_.push(other_facet_.data(), mine, -parity * to_end, simplices_[base + static_cast<std::size_t>(f)]);
+    }
+  }
+  progress_.simplex_found(static_cast<std::size_t>(s) + 1);
+}
+
+// What the searches of the facets that were used add to the statistics.
+struct SearchTotals {
+  engine::SearchCounters counters;
+  std::uint64_t exact = 0;   // exact predicate evaluations
+  std::uint64_t wasted = 0;  // searches whose facet was closed before its turn (threads > 1)
+  void add(const engine::SearchCounters& c, std::uint64_t exact_evaluations) {
+    counters.calls += c.calls;
+    counters.points_tested += c.points_tested;
+    counters.candidates += c.candidates;
+    exact += exact_evaluations;
+  }
+};
+
+// One thread: each facet searched when its turn comes.
+void search_serially(Frontier& frontier, engine::FacetSearch& search, int d, SearchTotals& totals) {
+  std::vector<std::int32_t> ids(static_cast<std::size_t>(d));
+  FacetInfo info{};
+  const std::uint64_t exact_before = geometry::exact_evaluations();
+  while (!frontier.queue_empty()) {
+    const bool closed = frontier.pop(ids.data(), info);
+    if (!frontier.take(ids.data(), info, closed)) continue;
+    frontier.close(ids.data(), info, search.find_apex(ids.data(), info.sigma, totals.counters));
+  }
+  totals.exact = geometry::exact_evaluations() - exact_before;
+}
+
+// The simplices one search thread found lately, by facet. Let S = A + x be the simplex found
+// for a facet A and B another facet of S, queued after A, that S did not open (its owner's
+// vertex opposite B is not the vertex of S off B). Then S is recorded by the end of A's turn
+// (from A's own result, or earlier, which is what closed A), and B is in the table by then, so
+// B is closed when its turn comes: its search can be skipped. A thread takes its facets in
+// increasing queue order, so everything it found came from facets queued earlier. This
+// catches what the closed marks cannot: facets closed by a simplex found moments before, not
+// yet recorded. A direct-mapped cache: a collision only loses a prediction.
+class ClosurePredictor {
+ public:
+  explicit ClosurePredictor(int d) : d_(d), keys_(kSize * static_cast<std::size_t>(d), -1), off_(kSize) {}
+
+  // S = facet + apex: remembers S's other facets.
+  void found(const std::int32_t* facet, std::int32_t apex) {
+    std::int32_t other[kMaxIds];
+    for (int drop = 0; drop < d_; ++drop) {
+      int w = 0;
+      bool placed = false;
+      for (int i = 0; i < d_; ++i) {
+        if (i == drop) continue;
+        if (!placed && apex < facet[i]) {
+          other[w++] = apex;
+          placed = true;
+        }
+        other[w++] = facet[i];
+      }
+      if (!placed) other[w++] = apex;
+      const std::size_t slot = hash(other);
+      std::copy(other, other + d_, keys_.begin() + static_cast<std::ptrdiff_t>(slot * static_cast<std::size_t>(d_)));
+      off_[slot] = facet[drop];
+    }
+  }
+  // True when a simplex found earlier closes the queued facet.
+  bool closes(const std::int32_t* ids, std::int32_t opposite) const {
+    const std::size_t slot = hash(ids);
+    const std::int32_t* key = &keys_[slot * static_cast<std::size_t>(d_)];
+    return std::equal(ids, ids + d_, key) && off_[slot] != opposite;
+  }
+
+ private:
+  static constexpr std::size_t kSize = 1024;
+  std::size_t hash(const std::int32_t* ids) const {
+    std::uint64_t h = 0;
+    for (int k = 0; k < d_; ++k) h = (h ^ static_cast<std::uint32_t>(ids[k])) * 0x9E3779B97F4A7C15ull;
+    return static_cast<std::size_t>(h >> 54) & (kSize - 1);
+  }
+  int d_;
+  std::vector<std::int32_t> keys_;  // kSize * d sorted ids
+  std::vector<std::int32_t> off_;   // the vertex of S off the key facet
+};
+
+// Several threads (Options::threads > 1). The calling thread runs the serial loop's order
+// unchanged: facets take their turns in queue order, and it alone records the simplices (the
+// facet table, the queue, the simplices and neighbours are its own). The searches are
+// read-only (points and kd-tree are shared; each thread has its own FacetSearch scratch) and a
+// facet's result depends on that facet only, so they can run ahead: the facets next in the
+// queue are copied into a window, a ring of slots, where every thread (the calling one too,
+// between the turns it records) claims runs of consecutive facets, searches them in order and
+// leaves the results. The output is the serial loop's, simplex numbers included, for every
+// thread count; so are the statistics, since only the searches of facets open at their turn
+// are counted, exactly those the serial loop makes.
+//
+// A facet searched ahead can turn out to be closed at its turn (the serial loop would not have
+// searched it): a wasted search, counted in Statistics::wasted_searches. Three things keep
+// these few: facets closed before they enter the window carry the queue's mark; facets
+// closed in the window get a flag that a thread reads before searching; and each thread
+// predicts the closures that its own recent simplices imply (ClosurePredictor). What remains
+// are facets closed by a simplex another thread is finding at the same moment.
+class SearchPipeline {
+ public:
+  SearchPipeline(const engine::PointStore& points, const SearchOptions& options, int threads, Frontier& frontier)
+      : d_(points.dim), threads_(threads), points_(points), options_(options), frontier_(frontier) {
+    std::size_t window = 64;
+    while (window < kRunsPerThread * kRun * static_cast<std::size_t>(threads)) window *= 2;
+    mask_ = window - 1;
+    ids_.resize(window * static_cast<std::size_t>(d_));
+    info_.resize(window);
+    results_.resize(window);
+    closed_.reset(new std::atomic<bool>[window]);
+    done_.reset(new std::atomic<std::uint64_t>[window]);
+    for (std::size_t i = 0; i < window; ++i) {
+      closed_[i].store(false, std::memory_order_relaxed);
+      done_[i].store(0, std::memory_order_relaxed);
+    }
+  }
+
+  void run(engine::Team& team, SearchTotals& totals) {
+    team.run(
+        threads_,
+        [&](int rank) {
+          // Each thread makes its own tools: their memory then comes from its own allocator
+          // arena, and no two threads write to one cache line while they search.
+          Worker worker(points_, options_, d_);
+          if (rank == 0) {
+            lead(worker, totals);
+            stop();  // done: the helpers return
+          } else {
+            help(worker);
+          }
+        },
+        [&] { stop(); });
+  }
+
+ private:
+  // Facets claimed at once. Long runs keep a thread's searches together: facets next to each
+  // other in the queue are next to each other in space, and a search reads the kd-tree nodes
+  // and points that the previous one brought into its core's cache. With runs of 16, the two
+  // threads alternated so often that each search missed the other core's cache lines: 2D 1M
+  // points, the search threads' CPU time was 35% above the serial search's; with 128, 10%.
+  static constexpr std::uint64_t kRun = 128;
+  // The window, in runs per thread: enough that a thread rarely finds every facet of the window
+  // claimed while the turn waits for a run still being searched. The longer the window, the
+  // more searches are wasted (a closure flag comes too late more often): with 4, 2D 1M points
+  // wastes about 0.2% of the searches and 3D 200k points about 2.5%, with 2 threads.
+  static constexpr std::size_t kRunsPerThread = 4;
+  static constexpr int kSpins = 256;  // pauses before yielding or sleeping
+  enum class Outcome : std::uint8_t { closed, predicted, searched };
+  struct Result {  // from the thread that claimed the facet
+    std::int32_t apex;
+    Outcome outcome;
+    std::uint32_t calls, points_tested, candidates;  // one search's SearchCounters (each below 2^32)
+    std::uint64_t exact;
+  };
+  // One thread's tools.
+  struct Worker {
+    Worker(const engine::PointStore& points, const SearchOptions& options, int d)
+        : search(points, options), predictor(d), facet(static_cast<std::size_t>(d)) {}
+    engine::FacetSearch search;
+    ClosurePredictor predictor;
+    // The facet being searched, copied out of the window: the search reads its ids for every
+    // point it tests, and the window's lines are written by other threads.
+    std::vector<std::int32_t> facet;
+  };
+
+  std::size_t slot(std::uint64_t k) const { return static_cast<std::size_t>(k) & mask_; }
+  std::int32_t* ids(std::size_t slot) { return &ids_[slot * static_cast<std::size_t>(d_)]; }
+  bool done(std::uint64_t k) const { return done_[slot(k)].load(std::memory_order_acquire) == k + 1; }
+
+  // The calling thread: takes the turns in order as their results come in, and searches runs
+  // of facets itself between them.
+  void lead(Worker& worker, SearchTotals& totals) {
+    std::uint64_t turn = 0;
+    refill(turn);
+    // Every turn whose result is in.
+    auto take_turns = [&] {
+      const std::uint64_t before = turn;
+      while (turn < filled_.load(std::memory_order_relaxed) && done(turn)) {
+        take_turn(slot(turn), totals);
+        ++turn;
+        if (filled_.load(std::memory_order_relaxed) + kRun <= turn + mask_ + 1) refill(turn);  // room for a run
+      }
+      if (turn == filled_.load(std::memory_order_relaxed)) refill(turn);
+      return turn != before;
+    };
+    for (int idle = 0;;) {
+      if (take_turns()) idle = 0;
+      if (turn == filled_.load(std::memory_order_relaxed)) return;  // the queue is empty: all recorded
+      std::uint64_t begin = 0, end = 0;
+      if (claim_run(begin, end)) {
+        for (std::uint64_t k = begin; k < end; ++k) {
+          process(worker, k);
+          take_turns();
+        }
+        idle = 0;
+      } else {
+        if (stopped_.load(std::memory_order_relaxed)) return;  // a helper failed: Team::run rethrows
+        // The turn's facet is being searched by another thread: wait, letting it run if the
+        // machine has fewer free cores than threads.
+        if (++idle < kSpins) pause();
+        else std::this_thread::yield();
+      }
+    }
+  }
+
+  void take_turn(std::size_t s, SearchTotals& totals) {
+    const Result& result = results_[s];
+    if (!frontier_.take(ids(s), info_[s], closed_[s].load(std::memory_order_relaxed))) {
+      if (result.outcome == Outcome::searched) ++totals.wasted;
+      return;
+    }
+    if (result.outcome != Outcome::searched) throw std::logic_error("delaunay: a facet predicted closed is open");
+    totals.add(engine::SearchCounters{result.calls, result.points_tested, result.candidates}, result.exact);
+    frontier_.close(ids(s), info_[s], result.apex);
+    for (std::uint64_t entry : frontier_.closed_after_pop()) closed_[slot(entry)].store(true, std::memory_order_release);
+    frontier_.closed_after_pop().clear();
+  }
+
+  // Copies facets from the queue into the window, up to its size ahead of the turn.
+  void refill(std::uint64_t turn) {
+    std::uint64_t filled = filled_.load(std::memory_order_relaxed);
+    const std::uint64_t before = filled;
+    while (filled < turn + mask_ + 1 && !frontier_.queue_empty()) {
+      const std::size_t s = slot(filled);
+      closed_[s].store(frontier_.pop(ids(s), info_[s]), std::memory_order_relaxed);
+      ++filled;
+    }
+    if (filled == before) return;
+    filled_.store(filled);  // sequentially consistent, against sleeping_ (see wait_for_work)
+    // Wake sleepers for a whole run only: one wake-up per facet would cost a context switch
+    // each on a machine busy with other work.
+    if (sleeping_.load() > 0 && filled - claimed_.load() >= kRun) {
+      { const std::lock_guard<std::mutex> lock(mutex_); }
+      wake_.notify_all();
+    }
+  }
+
+  // Claims the next facets of the window, up to kRun of them: [begin, end).
+  bool claim_run(std::uint64_t& begin, std::uint64_t& end) {
+    std::uint64_t k = claimed_.load(std::memory_order_relaxed);
+    for (;;) {
+      const std::uint64_t filled = filled_.load(std::memory_order_acquire);
+      if (k >= filled) return false;
+      const std::uint64_t last = std::min(k + kRun, filled);
+      if (claimed_.compare_exchange_weak(k, last, std::memory_order_acq_rel)) {
+        begin = k;
+        end = last;
+        return true;
+      }
+    }
+  }
+
+  // Decides facet k: closed (flagged), predicted closed, or searched.
+  void process(Worker& worker, std::uint64_t k) {
+    const std::size_t s = slot(k);
+    Result& result = results_[s];
+    std::copy(ids(s), ids(s) + d_, worker.facet.begin());
+    const std::int32_t* facet = worker.facet.data();
+    if (closed_[s].load(std::memory_order_acquire)) {
+      result.outcome = Outcome::closed;
+    } else if (worker.predictor.closes(facet, info_[s].opposite)) {
+      result.outcome = Outcome::predicted;
+    } else {
+      const std::uint64_t before = geometry::exact_evaluations();
+      engine::SearchCounters counters;
+      result.apex = worker.search.find_apex(facet, info_[s].sigma, counters);
+      result.calls = static_cast<std::uint32_t>(counters.calls);
+      result.points_tested = static_cast<std::uint32_t>(counters.points_tested);
+      result.candidates = static_cast<std::uint32_t>(counters.candidates);
+      result.exact = geometry::exact_evaluations() - before;
+      result.outcome = Outcome::searched;
+      if (result.apex >= 0) worker.predictor.found(facet, result.apex);
+    }
+    done_[s].store(k + 1, std::memory_order_release);
+  }
+
+  // A helper thread.
+  void help(Worker& worker) {
+    while (!stopped_.load(std::memory_order_relaxed)) {
+      std::uint64_t begin = 0, end = 0;
+      if (!claim_run(begin, end)) {
+        wait_for_work();
+        continue;
+      }
+      for (std::uint64_t k = begin; k < end; ++k) process(worker, k);
+    }
+  }
+
+  // Spins a little (the window refills within microseconds), then sleeps until the window
+  // holds a run of unclaimed facets (fewer are left to the calling thread) or the run stops.
+  void wait_for_work() {
+    for (int spin = 0; spin < kSpins; ++spin) {
+      if (stopped_.load() || claimed_.load() < filled_.load()) return;
+      pause();
+    }
+    auto ready = [&] {
+      const std::uint64_t claimed = claimed_.load();  // first: claimed <= filled at every moment
+      return stopped_.load() || filled_.load() - claimed >= kRun;
+    };
+    std::unique_lock<std::mutex> lock(mutex_);
+    ++sleeping_;  // before testing: refill() stores filled_, then reads sleeping_
+    wake_.wait(lock, ready);
+    --sleeping_;
+  }
+
+  void stop() {
+    stopped_.store(true);
+    { const std::lock_guard<std::mutex> lock(mutex_); }
+    wake_.notify_all();
+  }
+
+  static void pause() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+  }
+
+  int d_;
+  int threads_;
+  const engine::PointStore& points_;
+  const SearchOptions& options_;
+  Frontier& frontier_;
+  // The window: facet k in slot k mod size. Arrays, not a struct per slot: threads take
+  // neighbouring facets in runs, so a cache line moves between cores once for several facets.
+  std::size_t mask_ = 0;
+  std::vector<std::int32_t> ids_;  // d per slot, written by the calling thread as facets enter
+  std::vector<FacetInfo> info_;    // likewise
+  std::vector<Result> results_;    // written by the thread that claimed the facet
+  std::unique_ptr<std::atomic<bool>[]> closed_;         // set by the calling thread: closed since it entered
+  std::unique_ptr<std::atomic<std::uint64_t>[]> done_;  // k + 1 once the result of facet k is in
+  alignas(64) std::atomic<std::uint64_t> filled_{0};   // facets [0, filled) have entered the window
+  alignas(64) std::atomic<std::uint64_t> claimed_{0};  // facets [0, claimed) are decided or being decided
+  alignas(64) std::atomic<bool> stopped_{false};
+  std::atomic<int> sleeping_{0};
+  std::mutex mutex_;
+  std::condition_variable wake_;
+};
+
 }  // namespace
 
 Triangulation delaunay(PointsView input, const Options& options) {
@@ -121,86 +578,57 @@ Triangulation delaunay(PointsView input, const Options& options) {
   result.num_points = input.n;
   Statistics& stats = result.stats;
   stats.points = input.n;
+  if (options.threads < 0) throw UsageError("threads must be 0 (all hardware threads) or a positive count, got " + std::to_string(options.threads));
+  stats.threads = static_cast<std::size_t>(engine::resolve_threads(options.threads));
+  engine::Team team(static_cast<int>(stats.threads));
 
-  const engine::PointStore points = engine::prepare_points(input, 8, result.duplicates);
+  // Every search thread reads the store's fields for every node and point it visits: they get
+  // cache lines of their own, away from the locals below that the calling thread keeps writing
+  // (a precaution against false sharing; no difference was measurable on 2 cores).
+  struct alignas(64) SharedPoints {
+    engine::PointStore store;
+  };
+  const auto shared_points = std::make_unique<const SharedPoints>(SharedPoints{engine::prepare_points(input, 8, result.duplicates, team)});
+  const engine::PointStore& points = shared_points->store;
   const int d = points.dim;
   const int width = d + 1;
   stats.distinct_points = static_cast<std::size_t>(points.size);
   stats.seconds_kdtree = seconds_since(start);
 
   auto phase = Clock::now();
-  const engine::FirstFacet first = engine::find_first_facet(points);
+  const engine::FirstFacet first = engine::find_first_facet(points, team);
   stats.seconds_first_facet = seconds_since(phase);
+  // Exact evaluations before the search, on every thread.
+  const std::uint64_t exact_setup = geometry::exact_evaluations() - exact_before + team.helper_exact_evaluations();
 
   phase = Clock::now();
   std::vector<std::int32_t>& simplices = result.simplices;
-  std::vector<std::int32_t>& neighbors = result.neighbors;
-  engine::FacetTable table(d);
-  FacetQueue queue(d);
-  engine::FacetSearch search(points, options.search);
-  engine::SearchCounters counters;
-  ProgressCountdown progress(options.progress);
-  queue.push(first.ids.data(), engine::FacetOwner{-1, -1}, first.sigma);
-
-  std::vector<std::int32_t> facet(static_cast<std::size_t>(d));
-  std::vector<std::int32_t> other_facet(static_cast<std::size_t>(d));
-  while (!queue.empty()) {
-    stats.max_open_facets = std::max(stats.max_open_facets, table.size());
-    engine::FacetOwner owner{};
-    int sigma = 0;
-    queue.pop(facet.data(), owner, sigma);
-    // A facet closed by the simplex on its other side while it waited needs no search.
-    if (owner.simplex >= 0 && !table.remove(facet.data())) continue;
-    const std::int32_t apex = search.find_apex(facet.data(), sigma, counters);
-    if (apex < 0) {
-      ++stats.hull_facets;
-      continue;
-    }
-    // The new simplex: the facet's vertices, then the apex, whose orientation is sigma; one
-    // transposition of the first two vertices makes it positive.
-    const auto s = static_cast<std::int32_t>(simplices.size() / static_cast<std::size_t>(width));
-    const std::size_t base = simplices.size();
-    simplices.insert(simplices.end(), facet.begin(), facet.end());
-    simplices.push_back(apex);
-    if (sigma < 0) std::swap(simplices[base], simplices[base + 1]);
-    neighbors.insert(neighbors.end(), static_cast<std::size_t>(width), -1);
-    neighbors[base + static_cast<std::size_t>(d)] = owner.simplex;
-    if (owner.simplex >= 0) neighbors[static_cast<std::size_t>(owner.simplex) * width + static_cast<std::size_t>(owner.face)] = s;
-    else ++stats.hull_facets;  // the first facet lies on the hull
-    // The other facets: facet f omits vertex f. With the simplex positive, x is on the far side
-    // of facet f (its open side) where orientation with x in place of vertex f is negative.
-    for (int f = 0; f < d; ++f) {
-      std::size_t w = 0;
-      for (int i = 0; i < width; ++i)
-        if (i != f) other_facet[w++] = simplices[base + static_cast<std::size_t>(i)];
-      const int parity = sort_with_parity(other_facet.data(), d);
-      engine::FacetOwner seen{};
-      if (table.close_or_open(other_facet.data(), engine::FacetOwner{s, f}, &seen)) {
-        neighbors[base + static_cast<std::size_t>(f)] = seen.simplex;
-        neighbors[static_cast<std::size_t>(seen.simplex) * width + static_cast<std::size_t>(seen.face)] = s;
-      } else {
-        // Moving x from position f to the end takes d - f transpositions; sorting the rest
-        // multiplies by its parity. Open side: that orientation negative.
-        const int to_end = ((d - f) & 1) ? -1 : 1;
-        queue.push(other_facet.data(), engine::FacetOwner{s, f}, -parity * to_end);
-      }
-    }
-    progress.simplex_found(static_cast<std::size_t>(s) + 1);
+  Frontier frontier(d, result, options.progress);
+  frontier.open_first(first);
+  SearchTotals totals;
+  if (team.threads() == 1) {
+    engine::FacetSearch search(points, options.search);
+    search_serially(frontier, search, d, totals);
+  } else {
+    frontier.mark_closures();
+    SearchPipeline pipeline(points, options.search, team.threads(), frontier);
+    pipeline.run(team, totals);
   }
   stats.seconds_search = seconds_since(phase);
-  if (table.size() != 0) throw std::logic_error("delaunay: open facets left after the search");
+  if (!frontier.table_empty()) throw std::logic_error("delaunay: open facets left after the search");
 
   // Back to the caller's numbering.
   for (std::int32_t& v : simplices) v = static_cast<std::int32_t>(points.input_index[static_cast<std::size_t>(v)]);
-  if (!options.compute_neighbors) std::vector<std::int32_t>().swap(neighbors);
+  if (!options.compute_neighbors) std::vector<std::int32_t>().swap(result.neighbors);
   stats.simplices = simplices.size() / static_cast<std::size_t>(width);
-  stats.search_calls = counters.calls;
-  stats.points_tested = counters.points_tested;
-  stats.candidates = counters.candidates;
-  stats.exact_fallbacks = geometry::exact_evaluations() - exact_before;
+  stats.search_calls = totals.counters.calls;
+  stats.points_tested = totals.counters.points_tested;
+  stats.candidates = totals.counters.candidates;
+  stats.exact_fallbacks = exact_setup + totals.exact;
+  stats.wasted_searches = totals.wasted;
   stats.seconds_total = seconds_since(start);
   stats.peak_rss_bytes = peak_rss_bytes();
-  progress.finished(stats.simplices);
+  frontier.finished(stats.simplices);
   return result;
 }
 
