@@ -1,4 +1,5 @@
-// bench/peer_drange.cpp: drange itself, through the public API, with the chosen search variant.
+// bench/peer_drange.cpp: drange itself, through the public API, with the chosen search variant
+// and thread count (1 unless asked: the peers run on one thread).
 // The time is the whole of drange::delaunay (input checks, kd-tree, first facet, search,
 // neighbours); the statistics add the search phase alone and the paper's calls per simplex.
 #include <cstdio>
@@ -11,6 +12,7 @@ namespace drange::bench {
 PeerResult run_drange(const PointCloud& points, const RunOptions& options) {
   Options o;
   o.search = search_variant(options.variant);
+  o.threads = options.threads;
   const auto start = Clock::now();
   const Triangulation t = delaunay(points, o);
   const auto stop = Clock::now();

@@ -191,7 +191,9 @@ def main():
     table = []
     if rows:
         peers_in_set = [p for p in ALL_PEERS if any(p in PEERS_BY_DIM.get(d, HIGH_D_PEERS) for _, _, d in rows)]
-        head = ["input", "d", "n", "drange s", "drange MiB", "bytes/simplex", "calls/simplex", "simplices"]
+        cores = os.cpu_count() or 1
+        head = ["input", "d", "n", "drange s", "drange MiB", "bytes/simplex", "calls/simplex", "simplices",
+                f"drange {cores} threads s", "speed-up"]
         for p in peers_in_set:
             t = PEER_TITLES[p]
             head += [f"{t} s", f"{t} MiB", f"drange/{t}"]
@@ -212,6 +214,13 @@ def main():
                           ours["simplices"]]
             else:
                 cells += ["", "", ""]
+            # All cores: the same output (tests/threads_test.cpp), so only the time is new.
+            threaded = run_one(args.build, "drange", path, timeout, mem_limit, threads=cores)
+            results.append((dist, n, d, f"drange:threads={cores}", threaded))
+            speedup = ""
+            if ours.get("status") == "ok" and threaded.get("status") == "ok":
+                speedup = f"{float(ours['seconds']) / max(float(threaded['seconds']), 1e-9):.2f}"
+            cells += [secs(threaded, timeout), speedup]
             applicable = PEERS_BY_DIM.get(d, HIGH_D_PEERS)
             for p in peers_in_set:
                 if p not in applicable:
@@ -253,7 +262,8 @@ def main():
     out.append(f"- Load average after: {' '.join(load_after)}; the whole run took {elapsed / 60:.1f} min")
     out.append("")
     out.append("Times are construction only (file reading excluded; conversion to each peer's point type "
-               "excluded), one process per measurement, one thread except `CGAL 3D par` (2 threads). "
+               "excluded), one process per measurement, one thread except `CGAL 3D par` (2 threads) and "
+               "`drange N threads` (every core; speed-up = drange s / drange N threads s). "
                "MiB is the process's peak RSS (getrusage), input points included; bytes/simplex is drange's "
                "peak RSS minus the RSS after reading the input, divided by the simplices. Ratio = drange seconds / "
                "peer seconds: below 1 drange is faster. A count in parentheses is a peer's simplex count where it "
