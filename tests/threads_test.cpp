@@ -29,13 +29,9 @@ using drange::Triangulation;
 
 const int kThreadCounts[] = {2, 3, 4, 7};
 
+// The integer grid {0..k-1}^d.
 PointCloud grid(int d, int k) {
-  PointCloud g{d, {}};
-  int total = 1;
-  for (int i = 0; i < d; ++i) total *= k;
-  for (int t = 0; t < total; ++t)
-    for (int i = 0, r = t; i < d; ++i, r /= k) g.coords.push_back(r % k);
-  return g;
+  return drange::generate_points(Distribution::Grid, static_cast<std::size_t>(std::pow(k, d)), d, 1);
 }
 
 Triangulation run(const PointCloud& points, int threads, bool seeds = true) {
