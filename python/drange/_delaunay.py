@@ -88,7 +88,7 @@ class Delaunay(PointSetAttributes):
         # Removing vertex k from a positive simplex leaves a facet oriented by (-1)^(d-k); one
         # transposition where k is odd gives every facet the orientation (-1)^d.
         odd = (opposite % 2) == 1
-        facets[odd, 0], facets[odd, 1] = facets[odd, 1], facets[odd, 0].copy()
+        facets[odd, :2] = facets[odd, 1::-1]
         return facets
 
     @cached_property

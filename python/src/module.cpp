@@ -33,7 +33,6 @@ PointsView points_view(const Points& points, const char* what) {
 }
 
 Options engine_options(const std::string& variant, int threads, PythonProgress& progress) {
-  if (threads < 0) throw py::value_error("threads must be 0 (all cores) or positive; got " + std::to_string(threads));
   Options options;
   options.search = search_variant(variant);
   options.threads = threads;
