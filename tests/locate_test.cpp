@@ -5,6 +5,7 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -133,6 +134,35 @@ TEST(Locate, VectorFormAndErrors) {
   Triangulation no_neighbors = t;
   no_neighbors.neighbors.clear();
   EXPECT_THROW(SimplexLocator(points, no_neighbors), UsageError);
+}
+
+TEST(Locate, ThreadsGiveTheSameAnswers) {
+  // Enough queries for several chunks per thread, a quarter of them outside the hull, and grid
+  // queries on shared faces, where more than one simplex is a correct answer: every thread count
+  // must pick the same one.
+  for (const Distribution kind : {Distribution::Uniform, Distribution::Grid}) {
+    const PointCloud points = generate_points(kind, 4096, 2, 3);
+    const Triangulation t = delaunay(points);
+    const SimplexLocator locator(points, t);
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> coordinate(-0.1, 1.1);
+    const double scale = kind == Distribution::Grid ? 63.0 : 1.0;
+    std::vector<double> queries;
+    for (int i = 0; i < 30000; ++i)
+      for (int a = 0; a < 2; ++a)
+        queries.push_back(kind == Distribution::Grid ? std::round(coordinate(random) * 2 * scale) / 2 : coordinate(random));
+    const PointsView view(queries.data(), queries.size() / 2, 2);
+    std::vector<std::int32_t> serial(view.n), threaded(view.n);
+    locator.find(view, serial.data(), 1);
+    for (const int threads : {0, 2, 3, 8}) {
+      std::fill(threaded.begin(), threaded.end(), -7);
+      locator.find(view, threaded.data(), threads);
+      EXPECT_EQ(serial, threaded) << "threads " << threads;
+    }
+    for (std::size_t i = 0; i < view.n; i += 97)
+      if (serial[i] >= 0) EXPECT_TRUE(contains(points, t, static_cast<std::size_t>(serial[i]), view.point(i)));
+    EXPECT_THROW(locator.find(view, threaded.data(), -1), UsageError);
+  }
 }
 
 }  // namespace

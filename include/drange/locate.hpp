@@ -34,8 +34,9 @@ class SimplexLocator {
   // outside the convex hull or has a NaN or infinite coordinate. Safe to call concurrently.
   std::int32_t find(const double* q) const;
   // find() for each query (queries.dim must be the points' dimension); out has queries.n entries.
-  // Throws UsageError on a dimension mismatch.
-  void find(PointsView queries, std::int32_t* out) const;
+  // The queries are shared among `threads` threads (0: every hardware thread); the answers do
+  // not depend on it. Throws UsageError on a dimension mismatch or a negative thread count.
+  void find(PointsView queries, std::int32_t* out, int threads = 1) const;
 
  private:
   struct Impl;

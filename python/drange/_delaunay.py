@@ -19,7 +19,7 @@ class Delaunay(PointSetAttributes):
         supported (furthest_site=True and incremental=True raise NotImplementedError);
         qhull_options has no effect, since no decision needs a tolerance or a joggle.
     threads : int, keyword only
-        Threads for the search; 0 (default) uses all cores.
+        Threads for the search and for find_simplex; 0 (default) uses all cores.
     variant : str, keyword only
         The search variant: "full" (default), or one of the paper's ablations
         ("scan", "kdtree", "no-prune", "no-order"), for comparison.
@@ -49,6 +49,7 @@ class Delaunay(PointSetAttributes):
         check_options(variant, threads)
         self.points = as_points(points)
         self._core = _drange.triangulate(self.points, variant, int(threads), progress)
+        self._threads = int(threads)
         self.simplices = self._core.simplices
         self.neighbors = self._core.neighbors
         self.statistics = self._core.statistics
@@ -156,12 +157,13 @@ class Delaunay(PointSetAttributes):
 
         Exact: a point on a shared face, a vertex or the hull boundary is found in one of the
         simplices that hold it, a point one rounding error outside is outside, and NaN gives -1.
-        `bruteforce` and `tol` are scipy's and have no effect here.
+        The queries are shared among the `threads` given to the constructor; the answers do
+        not depend on the count. `bruteforce` and `tol` are scipy's and have no effect here.
         """
         xi = np.asarray(xi, dtype=np.float64)
         if xi.ndim == 0 or xi.shape[-1] != self.ndim:
             raise ValueError(f"wrong dimensionality in xi: shape {xi.shape}, expected (..., {self.ndim})")
-        found = self._core.find_simplex(np.ascontiguousarray(xi.reshape(-1, self.ndim)))
+        found = self._core.find_simplex(np.ascontiguousarray(xi.reshape(-1, self.ndim)), self._threads)
         return found.reshape(xi.shape[:-1])
 
     def __repr__(self):

@@ -69,7 +69,7 @@ struct Triangulated {
   std::unique_ptr<SimplexLocator> locator;  // built by the first find_simplex
   std::once_flag locator_built;             // find_simplex may run in several Python threads at once
 
-  py::array_t<std::int32_t> find_simplex(const Points& queries) {
+  py::array_t<std::int32_t> find_simplex(const Points& queries, int threads) {
     const PointsView view = points_view(queries, "xi");
     if (view.dim != result.dim)
       throw py::value_error("wrong dimensionality in xi: " + std::to_string(view.dim) + " coordinates, the points have " +
@@ -80,7 +80,7 @@ struct Triangulated {
       std::call_once(locator_built, [&] {
         locator = std::make_unique<SimplexLocator>(PointsView(points.data(), result.num_points, result.dim), result);
       });
-      locator->find(view, found.data());
+      locator->find(view, found.data(), threads);
     }
     return adopt(std::move(found), {static_cast<py::ssize_t>(view.n)});
   }
@@ -173,7 +173,7 @@ PYBIND11_MODULE(_drange, m) {
         return adopt(std::move(pairs), {static_cast<py::ssize_t>(t.result.duplicates.size()), 2});
       })
       .def_property_readonly("statistics", [](const Triangulated& t) { return statistics_dict(t.result.stats); })
-      .def("find_simplex", &Triangulated::find_simplex, py::arg("xi"));
+      .def("find_simplex", &Triangulated::find_simplex, py::arg("xi"), py::arg("threads"));
 
   py::class_<Diagram>(m, "Diagram")
       .def_property_readonly("vertices", [](py::object self) {

@@ -82,3 +82,12 @@ def test_thread_count_does_not_change_the_result(kind, n, d):
         assert np.array_equal(one.simplices, other.simplices)
         assert np.array_equal(one.neighbors, other.neighbors)
     assert drange.Delaunay(points, threads=2).statistics["threads"] == 2
+
+
+def test_find_simplex_gives_the_same_answers_on_every_thread_count():
+    points = sample("uniform", 5000, 2, seed=3)
+    queries = np.random.default_rng(4).uniform(-0.1, 1.1, (50000, 2))
+    one = drange.Delaunay(points, threads=1).find_simplex(queries)
+    for threads in (0, 2, 3):
+        assert np.array_equal(one, drange.Delaunay(points, threads=threads).find_simplex(queries))
+    assert (one >= 0).sum() > 30000 and (one == -1).sum() > 5000

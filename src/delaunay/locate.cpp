@@ -1,12 +1,14 @@
 // delaunay/locate.cpp: exact point location by a stochastic visibility walk (see locate.hpp).
 #include "drange/locate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "delaunay/team.hpp"
 #include "drange/errors.hpp"
 #include "geometry/predicates.hpp"
 #include "spatial/kdtree.hpp"
@@ -183,11 +185,21 @@ std::int32_t SimplexLocator::find(const double* q) const {
   return m.walk(start, q, seed);
 }
 
-void SimplexLocator::find(PointsView queries, std::int32_t* out) const {
+void SimplexLocator::find(PointsView queries, std::int32_t* out, int threads) const {
   if (queries.dim != impl_->d)
     throw UsageError("locate: query points have dimension " + std::to_string(queries.dim) +
                      ", the triangulation has dimension " + std::to_string(impl_->d));
-  for (std::size_t i = 0; i < queries.n; ++i) out[i] = find(queries.point(i));
+  if (threads < 0) throw UsageError("locate: threads must be 0 (all hardware threads) or a positive count, got " + std::to_string(threads));
+  // Each answer depends on its query alone (the walk's random sequence is seeded by the
+  // coordinates), so the queries split into chunks in any way give the same output. A chunk is
+  // long enough that taking it costs nothing next to its walks.
+  constexpr std::size_t kChunk = 4096;
+  const std::size_t chunks = (queries.n + kChunk - 1) / kChunk;
+  engine::Team team(chunks > 1 ? engine::resolve_threads(threads) : 1);
+  team.for_each(chunks, [&](std::size_t chunk) {
+    const std::size_t end = std::min(queries.n, (chunk + 1) * kChunk);
+    for (std::size_t i = chunk * kChunk; i < end; ++i) out[i] = find(queries.point(i));
+  });
 }
 
 }  // namespace drange
