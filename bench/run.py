@@ -293,7 +293,8 @@ def main():
                f"`skipped`: the peer timed out or ran out of memory on uniform input of a lower d with no more points, and "
                f"was not run. drange's own limit is {own_timeout} s, so that its time is known where a peer times out; "
                f"a ratio `< x` is then drange's time over the peer's limit. drange on every core runs up to "
-               f"{MAX_THREADED_D}D; CGAL dD dynamic up to 5D (slower than the static dimension in every row).")
+               f"{MAX_THREADED_D}D; CGAL dD dynamic up to 5D (slower than the static dimension in every row). "
+               f"A row with `not run` in every peer's column is for drange alone (a uniform input of a grid's size).")
     out.append("")
     if table:
         out.append("## Construction")
