@@ -53,7 +53,7 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
   const Triangulation triangulation = delaunay(points, options);
   if (!triangulation.duplicates.empty() && !quiet)
     std::cerr << "drange: " << duplicates_message(triangulation.duplicates) << '\n';
-  const Voronoi diagram = voronoi(points, triangulation, !arguments.has("no-volumes"));
+  const Voronoi diagram = voronoi(points, triangulation, !arguments.has("no-volumes"), threads);
 
   // Clipped cells when asked for (--cells, --box, or an output format that draws them).
   const bool want_cells = arguments.has("cells") || arguments.has("box") || needs_cells(format);
@@ -109,8 +109,8 @@ std::string voronoi_help() {
          "      --no-volumes      skip the volumes of the bounded cells (costly for d >= 6)\n"
          "      --stats           print the run's statistics (key=value) to standard error\n"
          "      --variant NAME    the Delaunay search variant (see drange delaunay --help)\n"
-         "      --threads N       threads for the triangulation (default 0: one per core); the\n"
-         "                        output is the same for every N\n"
+         "      --threads N       threads for the triangulation and the diagram (default 0: one\n"
+         "                        per core); the output is the same for every N\n"
          "  -q, --quiet           no progress line, no report of duplicate points\n"
          "  -h, --help            show this text\n"
          "\n"

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -347,6 +348,36 @@ TEST(Voronoi, RejectsATriangulationOfOtherPointsOrWithoutNeighbours) {
   EXPECT_THROW(voronoi(points, bare), UsageError);
   const PointCloud other = generate_points(Distribution::Uniform, 21, 2, 1);
   EXPECT_THROW(voronoi(other, delaunay(points)), UsageError);
+}
+
+// Every part of the diagram is shared among threads in ranges of points or simplices, then
+// joined in order: the result must be the same, bit for bit, for every thread count. The
+// inputs are large enough for several ranges per thread (8192 points, 512 simplices), and the
+// grids make the cospherical merging and the flag volumes' cancellations work.
+TEST(Voronoi, EveryThreadCountGivesTheSameDiagram) {
+  for (const RandomCase& c : {RandomCase{Distribution::Uniform, 40000, 2}, RandomCase{Distribution::Grid, 40000, 2},
+                              RandomCase{Distribution::Gaussian, 20000, 3}, RandomCase{Distribution::Grid, 27000, 3},
+                              RandomCase{Distribution::Uniform, 1500, 4}, RandomCase{Distribution::Grid, 625, 4}}) {
+    const PointCloud points = generate_points(c.distribution, c.n, c.d, 5);
+    const Triangulation t = delaunay(points);
+    const Voronoi one = voronoi(points, t, true, 1);
+    for (const int threads : {2, 3, 0}) {
+      const Voronoi other = voronoi(points, t, true, threads);
+      SCOPED_TRACE(std::string(family_name(c.distribution)) + " " + std::to_string(c.d) + "D, threads " + std::to_string(threads));
+      EXPECT_EQ(one.vertices, other.vertices);
+      EXPECT_EQ(one.simplex_vertex, other.simplex_vertex);
+      EXPECT_EQ(one.ridge_points, other.ridge_points);
+      EXPECT_EQ(one.ridge_vertices.offsets, other.ridge_vertices.offsets);
+      EXPECT_EQ(one.ridge_vertices.values, other.ridge_vertices.values);
+      EXPECT_EQ(one.regions.offsets, other.regions.offsets);
+      EXPECT_EQ(one.regions.values, other.regions.values);
+      EXPECT_EQ(one.point_region, other.point_region);
+      EXPECT_EQ(one.region_point, other.region_point);
+      EXPECT_EQ(one.volumes, other.volumes);  // exactly: the sums are made in one order
+    }
+  }
+  const PointCloud points = generate_points(Distribution::Uniform, 50, 2, 1);
+  EXPECT_THROW(voronoi(points, delaunay(points), true, -1), UsageError);
 }
 
 TEST(Voronoi, VolumesCanBeLeftOut) {

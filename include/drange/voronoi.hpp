@@ -86,7 +86,7 @@ struct ClippedCells {
 };
 
 struct VoronoiOptions {
-  Options delaunay;            // how the triangulation is computed
+  Options delaunay;            // how the triangulation is computed; its threads also build the diagram
   bool cell_volumes = true;    // fill Voronoi::volumes
 };
 
@@ -95,8 +95,9 @@ struct VoronoiOptions {
 Voronoi voronoi(PointsView points, const VoronoiOptions& options = {});
 
 // The same, from a triangulation already computed for these points by drange::delaunay
-// (its neighbours must be present).
-Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell_volumes = true);
+// (its neighbours must be present). The work is shared among `threads` threads (0: one per
+// hardware thread, as Options::threads); the diagram is the same for every count.
+Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell_volumes = true, int threads = 0);
 
 // Clips every cell of the diagram to the box (d = 2 or 3). Throws UsageError for another
 // dimension or a box that is empty, not finite, or of the wrong dimension.

@@ -220,7 +220,7 @@ PYBIND11_MODULE(_drange, m) {
     diagram->result = reporter.run([&] {
       const Triangulation triangulation = delaunay(input, options);
       diagram->statistics = triangulation.stats;
-      return voronoi(input, triangulation, cell_volumes);
+      return voronoi(input, triangulation, cell_volumes, threads);
     });
     diagram->points = std::move(points);
     return diagram;

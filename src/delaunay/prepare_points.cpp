@@ -10,10 +10,12 @@
 
 #include "drange/errors.hpp"
 #include "geometry/error_bound.hpp"
+#include "util/for_ranges.hpp"
 
 namespace drange::engine {
 
 namespace {
+using util::for_ranges;
 constexpr int kMaxDimension = 11;  // the filters' Laplace tables (geometry/minors.hpp) reach d+1 = 12 columns
 
 void check_input(PointsView input) {
@@ -29,16 +31,6 @@ void check_input(PointsView input) {
         throw InputError("point " + std::to_string(i) + ", coordinate " + std::to_string(k) + " is " +
                          (std::isnan(x) ? "NaN" : "infinite"));
     }
-}
-
-// Runs body(begin, end) over consecutive ranges covering [0, n), on the team's threads when n
-// is large; returns the ranges' count (body gets its range's index too).
-template <class Body>
-std::size_t for_ranges(std::size_t n, Team& team, Body body) {
-  constexpr std::size_t kMinRange = std::size_t{1} << 16;
-  const std::size_t ranges = std::max<std::size_t>(1, std::min(static_cast<std::size_t>(team.threads()) * 4, n / kMinRange));
-  team.for_each(ranges, [&](std::size_t i) { body(i, n * i / ranges, n * (i + 1) / ranges); });
-  return ranges;
 }
 
 // The Delaunay triangulation does not change under scaling, and multiplying by a power of two

@@ -10,11 +10,14 @@
 #include <limits>
 #include <vector>
 
+#include "util/for_ranges.hpp"
 #include "voronoi/diagram_parts.hpp"
 #include "voronoi/flag_volumes.hpp"
 
 namespace drange::diagram {
 namespace {
+
+constexpr std::size_t kRidgesPerRange = std::size_t{1} << 12;
 
 // The (d-1)-measure of a bounded ridge: a segment's length (2D) or a planar polygon's area
 // (3D; its vertices in cyclic order).
@@ -39,28 +42,42 @@ double ridge_measure(const Voronoi& v, std::size_t r) {
   return static_cast<double>(std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]) / 2);
 }
 
-// 2D and 3D: pyramids from each point over its ridges.
-std::vector<double> volumes_from_ridges(PointsView points, const Voronoi& v) {
+// 2D and 3D: pyramids from each point over its ridges. The pyramids of a block of ridges are
+// computed on the team's threads, then added to the cells in ridge order, so that every sum
+// (and its rounding) is the same for every thread count.
+std::vector<double> volumes_from_ridges(PointsView points, const Voronoi& v, engine::Team& team) {
   std::vector<double> volume(points.n, 0.0);
-  for (std::size_t r = 0; r < v.num_ridges(); ++r) {
-    const std::int32_t* ids = v.ridge_vertices.row(r);
-    if (ids[0] < 0) continue;  // unbounded: both cells are unbounded
-    const auto p = static_cast<std::size_t>(v.ridge_points[2 * r]);
-    const auto q = static_cast<std::size_t>(v.ridge_points[2 * r + 1]);
-    double distance2 = 0;
-    for (int k = 0; k < v.dim; ++k) distance2 += (points.point(q)[k] - points.point(p)[k]) * (points.point(q)[k] - points.point(p)[k]);
-    const double pyramid = std::sqrt(distance2) / 2 * ridge_measure(v, r) / v.dim;
-    volume[p] += pyramid;
-    volume[q] += pyramid;
+  constexpr std::size_t kBlock = std::size_t{1} << 16;
+  std::vector<double> pyramids(std::min(kBlock, v.num_ridges()));
+  for (std::size_t first = 0; first < v.num_ridges(); first += kBlock) {
+    const std::size_t count = std::min(kBlock, v.num_ridges() - first);
+    util::for_ranges(count, team, [&](std::size_t, std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::size_t r = first + i;
+        if (v.ridge_vertices.row(r)[0] < 0) continue;  // unbounded: both cells are unbounded
+        const auto p = static_cast<std::size_t>(v.ridge_points[2 * r]);
+        const auto q = static_cast<std::size_t>(v.ridge_points[2 * r + 1]);
+        double distance2 = 0;
+        for (int k = 0; k < v.dim; ++k) distance2 += (points.point(q)[k] - points.point(p)[k]) * (points.point(q)[k] - points.point(p)[k]);
+        pyramids[i] = std::sqrt(distance2) / 2 * ridge_measure(v, r) / v.dim;
+      }
+    }, kRidgesPerRange);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t r = first + i;
+      if (v.ridge_vertices.row(r)[0] < 0) continue;
+      volume[static_cast<std::size_t>(v.ridge_points[2 * r])] += pyramids[i];
+      volume[static_cast<std::size_t>(v.ridge_points[2 * r + 1])] += pyramids[i];
+    }
   }
   return volume;
 }
 
 }  // namespace
 
-void compute_cell_volumes(PointsView points, const Triangulation& t, const std::vector<char>& on_hull, Voronoi& out) {
+void compute_cell_volumes(PointsView points, const Triangulation& t, const std::vector<char>& on_hull, Voronoi& out,
+                          engine::Team& team) {
   const std::vector<double> volume =
-      t.dim <= 3 ? volumes_from_ridges(points, out) : flag_cell_volumes(points, t, on_hull);
+      t.dim <= 3 ? volumes_from_ridges(points, out, team) : flag_cell_volumes(points, t, on_hull, team);
   out.volumes.resize(out.region_point.size());
   for (std::size_t r = 0; r < out.region_point.size(); ++r) {
     const auto p = static_cast<std::size_t>(out.region_point[r]);

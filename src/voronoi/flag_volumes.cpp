@@ -20,6 +20,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "util/for_ranges.hpp"
+
 namespace drange::diagram {
 namespace {
 
@@ -146,21 +148,38 @@ class SimplexPieces {
 
 }  // namespace
 
-std::vector<double> flag_cell_volumes(PointsView points, const Triangulation& t, const std::vector<char>& on_hull) {
+std::vector<double> flag_cell_volumes(PointsView points, const Triangulation& t, const std::vector<char>& on_hull,
+                                      engine::Team& team) {
   const int width = t.dim + 1;
+  const auto w = static_cast<std::size_t>(width);
   std::vector<double> volume(t.num_points, 0.0);
-  SimplexPieces<double> fast(t.dim);
-  SimplexPieces<Quad> careful(t.dim);
-  for (std::size_t s = 0; s < t.size(); ++s) {
-    const std::int32_t* row = t.simplex(s);
-    bool any_interior = false;
-    for (int k = 0; k < width; ++k) any_interior |= !on_hull[static_cast<std::size_t>(row[k])];
-    if (!any_interior) continue;
-    const bool flat = fast.compute(points, row) < kFlatFace;
-    if (flat) careful.compute(points, row);
-    for (int i = 0; i < width; ++i)
-      if (!on_hull[static_cast<std::size_t>(row[i])])
-        volume[static_cast<std::size_t>(row[i])] += flat ? static_cast<double>(careful.cell_part(i)) : fast.cell_part(i);
+  // The pieces of a block of simplices are computed on the team's threads, then added to the
+  // cells in simplex order, so that every sum (and its rounding) is the same for every thread
+  // count; the block bounds the memory of the pieces.
+  constexpr std::size_t kBlock = std::size_t{1} << 16;
+  std::vector<double> parts(std::min(kBlock, t.size()) * w);
+  for (std::size_t first = 0; first < t.size(); first += kBlock) {
+    const std::size_t count = std::min(kBlock, t.size() - first);
+    util::for_ranges(count, team, [&](std::size_t, std::size_t begin, std::size_t end) {
+      SimplexPieces<double> fast(t.dim);
+      SimplexPieces<Quad> careful(t.dim);
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::int32_t* row = t.simplex(first + i);
+        double* part = &parts[i * w];
+        bool any_interior = false;
+        for (int k = 0; k < width; ++k) any_interior |= !on_hull[static_cast<std::size_t>(row[k])];
+        if (!any_interior) continue;  // nothing of it is added
+        const bool flat = fast.compute(points, row) < kFlatFace;
+        if (flat) careful.compute(points, row);
+        for (int k = 0; k < width; ++k)
+          part[k] = flat ? static_cast<double>(careful.cell_part(k)) : fast.cell_part(k);
+      }
+    }, kSimplicesPerRange);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::int32_t* row = t.simplex(first + i);
+      for (int k = 0; k < width; ++k)
+        if (!on_hull[static_cast<std::size_t>(row[k])]) volume[static_cast<std::size_t>(row[k])] += parts[i * w + static_cast<std::size_t>(k)];
+    }
   }
   return volume;
 }

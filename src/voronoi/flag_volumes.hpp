@@ -13,14 +13,21 @@
 // pieces of a degenerate face cancel (their heights have opposite signs).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
+#include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/points.hpp"
 
 namespace drange::diagram {
 
+// Simplices per range of a thread: each is worth microseconds in 4D and more above.
+inline constexpr std::size_t kSimplicesPerRange = 512;
+
 // The volume of the cell of every point not on the hull (on_hull[p] == 0); 0 for the others.
-std::vector<double> flag_cell_volumes(PointsView points, const Triangulation& t, const std::vector<char>& on_hull);
+// The same for every thread count of `team`.
+std::vector<double> flag_cell_volumes(PointsView points, const Triangulation& t, const std::vector<char>& on_hull,
+                                      engine::Team& team);
 
 }  // namespace drange::diagram

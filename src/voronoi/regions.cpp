@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "util/for_ranges.hpp"
 #include "voronoi/diagram_parts.hpp"
 
 namespace drange::diagram {
@@ -40,15 +41,24 @@ void append_region(const Triangulation& t, const VertexClasses& classes, const I
 }  // namespace
 
 void build_regions(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence,
-                   const std::vector<char>& on_hull, Voronoi& out) {
+                   const std::vector<char>& on_hull, Voronoi& out, engine::Team& team) {
   // Regions are numbered in the order the points are visited (incidence.order, for cache
-  // locality); point_region maps each input point to its own.
+  // locality); point_region maps each input point to its own. Each range of points gets its own
+  // lists, joined in range order: the thread count does not change the output.
   out.point_region.assign(t.num_points, -1);
-  for (const std::int32_t p : incidence.order) {
-    out.point_region[static_cast<std::size_t>(p)] = static_cast<std::int32_t>(out.regions.size());
-    out.region_point.push_back(p);
-    append_region(t, classes, incidence, on_hull, p, out.regions);
-    out.regions.end_row();
+  out.region_point = incidence.order;
+  std::vector<IndexLists> parts(static_cast<std::size_t>(team.threads()) * 4);
+  const std::size_t ranges = util::for_ranges(incidence.order.size(), team, [&](std::size_t i, std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r < end; ++r) {
+      const std::int32_t p = incidence.order[r];
+      out.point_region[static_cast<std::size_t>(p)] = static_cast<std::int32_t>(r);
+      append_region(t, classes, incidence, on_hull, p, parts[i]);
+      parts[i].end_row();
+    }
+  }, kPointsPerRange);
+  for (std::size_t i = 0; i < ranges; ++i) {
+    append_lists(parts[i], out.regions);
+    parts[i] = IndexLists{};
   }
   // A duplicate has no simplex; it shares the region of the point it copies.
   for (const Duplicate& dup : t.duplicates)

@@ -14,6 +14,7 @@
 #include <tuple>
 #include <vector>
 
+#include "util/for_ranges.hpp"
 #include "voronoi/diagram_parts.hpp"
 
 namespace drange::diagram {
@@ -24,6 +25,12 @@ struct Sharing {
   std::int32_t cls;      // a class (cell) around the edge pq
   std::int32_t simplex;  // a simplex having p and q, in that class or bounding that hull facet
   bool operator<(const Sharing& o) const { return std::tie(q, cls) < std::tie(o.q, o.cls); }
+};
+
+// One range's ridges: ridge_points pairs and ridge_vertices rows.
+struct RidgeLists {
+  std::vector<std::int32_t> points;
+  IndexLists vertices;
 };
 
 class RidgeBuilder {
@@ -98,13 +105,13 @@ class RidgeBuilder {
   int width_;
 };
 
-}  // namespace
-
-void build_ridges(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence, Voronoi& out) {
-  const RidgeBuilder builder(t, classes);
+// The ridges of the edges pq with p < q, for the points order[begin, end), appended in that order.
+void append_ridges(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence,
+                   const RidgeBuilder& builder, std::size_t begin, std::size_t end, RidgeLists& out) {
   const int width = t.dim + 1;
   std::vector<Sharing> around;
-  for (const std::int32_t pp : incidence.order) {
+  for (std::size_t i = begin; i < end; ++i) {
+    const std::int32_t pp = incidence.order[i];
     const auto p = static_cast<std::size_t>(pp);
     around.clear();
     for (const std::int32_t* it = incidence.begin(p); it != incidence.end(p); ++it) {
@@ -125,17 +132,35 @@ void build_ridges(const Triangulation& t, const VertexClasses& classes, const In
     around.erase(std::unique(around.begin(), around.end(),
                              [](const Sharing& a, const Sharing& b) { return a.q == b.q && a.cls == b.cls; }),
                  around.end());
-    for (std::size_t i = 0; i < around.size();) {
-      std::size_t j = i;
-      while (j < around.size() && around[j].q == around[i].q) ++j;
-      if (builder.is_ridge(pp, &around[i], &around[j])) {
-        out.ridge_points.push_back(pp);
-        out.ridge_points.push_back(around[i].q);
-        builder.append_vertices(pp, &around[i], &around[j], out.ridge_vertices);
-        out.ridge_vertices.end_row();
+    for (std::size_t a = 0; a < around.size();) {
+      std::size_t b = a;
+      while (b < around.size() && around[b].q == around[a].q) ++b;
+      if (builder.is_ridge(pp, &around[a], &around[b])) {
+        out.points.push_back(pp);
+        out.points.push_back(around[a].q);
+        builder.append_vertices(pp, &around[a], &around[b], out.vertices);
+        out.vertices.end_row();
       }
-      i = j;
+      a = b;
     }
+  }
+}
+
+}  // namespace
+
+void build_ridges(const Triangulation& t, const VertexClasses& classes, const Incidence& incidence, Voronoi& out,
+                  engine::Team& team) {
+  const RidgeBuilder builder(t, classes);
+  // Each range of points gets its own lists, joined in range order: the thread count does not
+  // change the output.
+  std::vector<RidgeLists> parts(static_cast<std::size_t>(team.threads()) * 4);
+  const std::size_t ranges = util::for_ranges(incidence.order.size(), team, [&](std::size_t i, std::size_t begin, std::size_t end) {
+    append_ridges(t, classes, incidence, builder, begin, end, parts[i]);
+  }, kPointsPerRange);
+  for (std::size_t i = 0; i < ranges; ++i) {
+    out.ridge_points.insert(out.ridge_points.end(), parts[i].points.begin(), parts[i].points.end());
+    append_lists(parts[i].vertices, out.ridge_vertices);
+    parts[i] = RidgeLists{};  // free as we go
   }
 }
 

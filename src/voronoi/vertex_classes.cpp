@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "geometry/predicates.hpp"
+#include "util/for_ranges.hpp"
 #include "util/key_groups.hpp"
 #include "util/union_find.hpp"
 #include "voronoi/circumcentre.hpp"
@@ -21,6 +22,8 @@ namespace {
 // flatter than the bound, goes to the exact predicate, which alone decides a merge.
 constexpr double kTrustedRatio = 1e8;
 constexpr double kSeparation = 1e-6;
+// Simplices per range of a thread (a circumcentre or a few exact tests each).
+constexpr std::size_t kCentresPerRange = std::size_t{1} << 12;
 
 struct Context {
   PointsView points;
@@ -41,31 +44,45 @@ double squared_distance(int d, const double* a, const double* b) {
 
 // Unites neighbouring simplices with the same circumsphere. `centres` and `ratios` are the
 // per-simplex results of simplex_circumcentre.
-void unite_cospherical(const Context& c, const std::vector<double>& centres, const std::vector<float>& ratios,
-                       util::UnionFind& classes) {
-  const std::size_t m = c.t.size();
-  std::vector<const double*> corners(static_cast<std::size_t>(c.width));
-  for (std::size_t s = 0; s < m; ++s) {
-    const double* centre = centres.data() + s * static_cast<std::size_t>(c.d);
-    const double radius2 = squared_distance(c.d, centre, c.point(c.vertex(s, 0)));
-    bool corners_set = false;
-    for (int k = 0; k < c.width; ++k) {
-      const std::int32_t other = c.neighbor(s, k);
-      if (other < 0 || static_cast<std::size_t>(other) < s) continue;  // each facet once
-      const auto o = static_cast<std::size_t>(other);
-      if (ratios[s] < kTrustedRatio && ratios[o] < kTrustedRatio &&
-          squared_distance(c.d, centre, centres.data() + o * static_cast<std::size_t>(c.d)) >
-              kSeparation * kSeparation * radius2)
-        continue;
-      int far = 0;
-      while (c.neighbor(o, far) != static_cast<std::int32_t>(s)) ++far;
-      if (!corners_set) {
-        for (int i = 0; i < c.width; ++i) corners[static_cast<std::size_t>(i)] = c.point(c.vertex(s, i));
-        corners_set = true;
-      }
-      if (geometry::in_sphere(c.d, corners.data(), c.point(c.vertex(o, far))) == 0) classes.unite(s, o);
+// Whether simplex s has the same circumsphere as its neighbour across facet k, for the
+// neighbours of higher index (each facet once): bit k of the result.
+std::uint32_t cospherical_neighbours(const Context& c, const std::vector<double>& centres, const std::vector<float>& ratios,
+                                     std::size_t s, std::vector<const double*>& corners) {
+  const double* centre = centres.data() + s * static_cast<std::size_t>(c.d);
+  const double radius2 = squared_distance(c.d, centre, c.point(c.vertex(s, 0)));
+  std::uint32_t same = 0;
+  bool corners_set = false;
+  for (int k = 0; k < c.width; ++k) {
+    const std::int32_t other = c.neighbor(s, k);
+    if (other < 0 || static_cast<std::size_t>(other) < s) continue;
+    const auto o = static_cast<std::size_t>(other);
+    if (ratios[s] < kTrustedRatio && ratios[o] < kTrustedRatio &&
+        squared_distance(c.d, centre, centres.data() + o * static_cast<std::size_t>(c.d)) > kSeparation * kSeparation * radius2)
+      continue;
+    int far = 0;
+    while (c.neighbor(o, far) != static_cast<std::int32_t>(s)) ++far;
+    if (!corners_set) {
+      for (int i = 0; i < c.width; ++i) corners[static_cast<std::size_t>(i)] = c.point(c.vertex(s, i));
+      corners_set = true;
     }
+    if (geometry::in_sphere(c.d, corners.data(), c.point(c.vertex(o, far))) == 0) same |= std::uint32_t{1} << k;
   }
+  return same;
+}
+
+// The exact tests run on the team's threads (an integer grid has one per facet of every cell);
+// the unions, in simplex order, on the calling thread.
+void unite_cospherical(const Context& c, const std::vector<double>& centres, const std::vector<float>& ratios,
+                       util::UnionFind& classes, engine::Team& team) {
+  const std::size_t m = c.t.size();
+  std::vector<std::uint32_t> same(m);
+  util::for_ranges(m, team, [&](std::size_t, std::size_t begin, std::size_t end) {
+    std::vector<const double*> corners(static_cast<std::size_t>(c.width));
+    for (std::size_t s = begin; s < end; ++s) same[s] = cospherical_neighbours(c, centres, ratios, s, corners);
+  }, kCentresPerRange);
+  for (std::size_t s = 0; s < m; ++s)
+    for (int k = 0; same[s] != 0 && k < c.width; ++k)
+      if (same[s] & (std::uint32_t{1} << k)) classes.unite(s, static_cast<std::size_t>(c.neighbor(s, k)));
 }
 
 struct HullFacet {
@@ -111,7 +128,7 @@ void unite_coplanar(const Context& c, const std::vector<HullFacet>& hull, util::
 
 }  // namespace
 
-VertexClasses classify_vertices(PointsView points, const Triangulation& t) {
+VertexClasses classify_vertices(PointsView points, const Triangulation& t, engine::Team& team) {
   const Context c{points, t, t.dim, t.dim + 1};
   const std::size_t m = t.size();
   const auto d = static_cast<std::size_t>(c.d);
@@ -120,12 +137,14 @@ VertexClasses classify_vertices(PointsView points, const Triangulation& t) {
   // Every simplex's circumcentre, and how flat the simplex is.
   std::vector<double> centres(m * d);
   std::vector<float> ratios(m);
-  std::vector<const double*> corners(width);
-  for (std::size_t s = 0; s < m; ++s) {
-    for (std::size_t i = 0; i < width; ++i) corners[i] = c.point(c.vertex(s, static_cast<int>(i)));
-    const double ratio = simplex_circumcentre(c.d, corners.data(), centres.data() + s * d);
-    ratios[s] = static_cast<float>(std::min(ratio, 1e30));
-  }
+  util::for_ranges(m, team, [&](std::size_t, std::size_t begin, std::size_t end) {
+    std::vector<const double*> corners(width);
+    for (std::size_t s = begin; s < end; ++s) {
+      for (std::size_t i = 0; i < width; ++i) corners[i] = c.point(c.vertex(s, static_cast<int>(i)));
+      const double ratio = simplex_circumcentre(c.d, corners.data(), centres.data() + s * d);
+      ratios[s] = static_cast<float>(std::min(ratio, 1e30));
+    }
+  }, kCentresPerRange);
 
   std::vector<HullFacet> hull;
   for (std::size_t s = 0; s < m; ++s)
@@ -134,7 +153,7 @@ VertexClasses classify_vertices(PointsView points, const Triangulation& t) {
 
   // Union-find over simplices 0..m-1, then hull facets m..m+h-1.
   util::UnionFind classes(m + hull.size());
-  unite_cospherical(c, centres, ratios, classes);
+  unite_cospherical(c, centres, ratios, classes, team);
   unite_coplanar(c, hull, classes, m);
 
   // Number the classes in the order of their first member: simplices first, so that the

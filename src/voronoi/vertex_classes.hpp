@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/points.hpp"
 #include "drange/voronoi.hpp"
@@ -55,6 +56,8 @@ struct VertexClasses {
 
 // Classifies the simplices and hull facets of a triangulation of `points` (its neighbours
 // must be present).
-VertexClasses classify_vertices(PointsView points, const Triangulation& triangulation);
+// The exact tests and the circumcentres run on the team's threads; the result does not depend
+// on their count.
+VertexClasses classify_vertices(PointsView points, const Triangulation& triangulation, engine::Team& team);
 
 }  // namespace drange::diagram

@@ -14,7 +14,7 @@
 
 namespace drange {
 
-Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell_volumes) {
+Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell_volumes, int threads) {
   const Triangulation& t = triangulation;
   if (t.dim != points.dim || t.num_points != points.n)
     throw UsageError("voronoi: the triangulation was computed for other points (dimension " + std::to_string(t.dim) +
@@ -23,17 +23,20 @@ Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell
   if (t.neighbors.size() != t.simplices.size())
     throw UsageError("voronoi: the triangulation has no neighbours (compute it with Options::compute_neighbors)");
 
+  if (threads < 0) throw UsageError("voronoi: threads must be 0 (all hardware threads) or a positive count, got " + std::to_string(threads));
+  engine::Team team(engine::resolve_threads(threads));
+
   Voronoi out;
   out.dim = t.dim;
   out.num_points = t.num_points;
-  diagram::VertexClasses classes = diagram::classify_vertices(points, t);
+  diagram::VertexClasses classes = diagram::classify_vertices(points, t, team);
   const diagram::Incidence incidence = diagram::point_incidence(t);
-  diagram::build_ridges(t, classes, incidence, out);
+  diagram::build_ridges(t, classes, incidence, out, team);
   const std::vector<char> on_hull = diagram::hull_points(t);
-  diagram::build_regions(t, classes, incidence, on_hull, out);
+  diagram::build_regions(t, classes, incidence, on_hull, out, team);
   out.simplex_vertex = std::move(classes.of_simplex);
   out.vertices = std::move(classes.vertices);
-  if (cell_volumes) diagram::compute_cell_volumes(points, t, on_hull, out);  // uses the vertices in 2D/3D
+  if (cell_volumes) diagram::compute_cell_volumes(points, t, on_hull, out, team);  // uses the vertices in 2D/3D
   return out;
 }
 
@@ -41,7 +44,7 @@ Voronoi voronoi(PointsView points, const VoronoiOptions& options) {
   Options delaunay_options = options.delaunay;
   delaunay_options.compute_neighbors = true;
   const Triangulation triangulation = delaunay(points, delaunay_options);
-  return voronoi(points, triangulation, options.cell_volumes);
+  return voronoi(points, triangulation, options.cell_volumes, options.delaunay.threads);
 }
 
 }  // namespace drange
