@@ -56,7 +56,9 @@ struct Options {
   // serial run. The result, simplex numbers and statistics included (except the times and
   // Statistics::wasted_searches), is the same for every count. With more than one, the facets'
   // searches run on helper threads, ahead of the calling thread, which records the simplices
-  // in the serial order and is the only one that calls `progress`.
+  // in the serial order and is the only one that calls `progress`. A program that runs several
+  // triangulations at once on its own threads should give each 1 (or its share of the cores):
+  // with 0, each call starts one thread per core, and the cores are oversubscribed.
   int threads = 0;
 };
 
