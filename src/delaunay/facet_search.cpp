@@ -41,8 +41,15 @@ class SearchKernel final : public FacetSearch::Kernel {
     return options_.visit_facet_child_first && centroid_[static_cast<std::size_t>(node.split_axis)] > node.split_value;
   }
   void leaf(std::int32_t begin, std::int32_t end) {
-    for (std::int32_t id = begin; id < end; ++id)
-      if (in_query(points_.point(id))) test(id);
+    for (std::int32_t id = begin; id < end; ++id) {
+      if (ball_) {  // the usual case: skip to the leaf's next point in the ball
+        id = first_in_ball(id, end);
+        if (id == end) return;
+        test(id);
+      } else if (in_query(points_.point(id))) {
+        test(id);
+      }
+    }
   }
 
  private:
@@ -63,6 +70,25 @@ class SearchKernel final : public FacetSearch::Kernel {
     for (int k = 0; k < d; ++k)
       if (x[k] < lower_[static_cast<std::size_t>(k)] || x[k] > upper_[static_cast<std::size_t>(k)]) return false;
     return true;
+  }
+  // The first point of [id, end) in the ball, or end: in_query's ball test as a loop of its
+  // own, the same arithmetic in the same order (so the same points pass), with the ball in
+  // locals (test() may change it, so the loop stops at the first point that passes). Points
+  // are contiguous: a leaf's ids are consecutive.
+  std::int32_t first_in_ball(std::int32_t id, std::int32_t end) const {
+    const int d = dim();
+    std::array<double, kMaxRow> centre;
+    for (int k = 0; k < d; ++k) centre[static_cast<std::size_t>(k)] = centre_[static_cast<std::size_t>(k)];
+    const double reach2 = ball_reach2_;
+    for (const double* x = points_.point(id); id < end; ++id, x += d) {
+      double distance2 = 0.0;
+      for (int k = 0; k < d; ++k) {
+        const double delta = x[k] - centre[static_cast<std::size_t>(k)];
+        distance2 += delta * delta;
+      }
+      if (!(distance2 > reach2)) return id;
+    }
+    return end;
   }
   void consider(std::int32_t id) {
     if (in_query(points_.point(id))) test(id);
