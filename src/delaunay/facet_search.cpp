@@ -1,6 +1,6 @@
 // delaunay/facet_search.cpp: the shrinking kd-tree search for the Delaunay point of a facet.
 //
-// One algorithm, SearchKernel<D>, compiled for D = 2..6 (loops of fixed length, no heap
+// One algorithm, SearchKernel<D>, compiled for D = 2..8 (loops of fixed length, no heap
 // indirection in the hot path) and for D = 0 (any d, read at run time).
 #include "delaunay/facet_search.hpp"
 
@@ -441,13 +441,15 @@ int search_leaf_size(int dim) {
   return dim < static_cast<int>(std::size(kByDimension)) ? kByDimension[dim] : kByDimension[std::size(kByDimension) - 1];
 }
 
-FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options) {
-  switch (points.dim) {
+FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options, KernelChoice choice) {
+  switch (choice == KernelChoice::FixedDimension ? points.dim : 0) {
     case 2: kernel_ = std::make_unique<SearchKernel<2>>(points, options); break;
     case 3: kernel_ = std::make_unique<SearchKernel<3>>(points, options); break;
     case 4: kernel_ = std::make_unique<SearchKernel<4>>(points, options); break;
     case 5: kernel_ = std::make_unique<SearchKernel<5>>(points, options); break;
     case 6: kernel_ = std::make_unique<SearchKernel<6>>(points, options); break;
+    case 7: kernel_ = std::make_unique<SearchKernel<7>>(points, options); break;
+    case 8: kernel_ = std::make_unique<SearchKernel<8>>(points, options); break;
     default: kernel_ = std::make_unique<SearchKernel<0>>(points, options); break;
   }
 }
