@@ -361,8 +361,8 @@ void SearchKernel<D>::test(std::int32_t id) {
 template <int D>
 bool SearchKernel<D>::prune(std::int32_t node) const {
   const int d = dim();
-  const double* lo = points_.tree.lower(node);
-  const double* hi = points_.tree.upper(node);
+  const double* lo = points_.tree.template lower<D>(node);
+  const double* hi = points_.tree.template upper<D>(node);
   if (ball_) {  // the node's box misses the ball (the walk only checked the ball's bounding box)
     double distance2 = 0.0;
     for (int k = 0; k < d; ++k) {

@@ -49,8 +49,14 @@ class KdTree {
   std::int32_t leaf_of(std::int32_t position) const { return leaf_of_[static_cast<std::size_t>(position)]; }
   std::int32_t parent(std::int32_t node) const { return parent_[static_cast<std::size_t>(node)]; }
   const std::vector<Node>& nodes() const { return nodes_; }
-  const double* lower(std::int32_t node) const { return &boxes_[static_cast<std::size_t>(node) * 2 * dim_]; }
-  const double* upper(std::int32_t node) const { return lower(node) + dim_; }
+  // The node's box. D > 0: the caller promises dim() == D (the address then needs no
+  // multiplication by a run-time value in the walk's hot loop).
+  template <int D = 0>
+  const double* lower(std::int32_t node) const {
+    return &boxes_[static_cast<std::size_t>(node) * 2 * static_cast<std::size_t>(dimension<D>())];
+  }
+  template <int D = 0>
+  const double* upper(std::int32_t node) const { return lower<D>(node) + dimension<D>(); }
   int dim() const { return dim_; }
   std::size_t memory_bytes() const;
 
@@ -91,8 +97,8 @@ class KdTree {
   int dimension() const { return D > 0 ? D : dim_; }
   template <int D>
   bool meets(std::int32_t node, const double* lo, const double* hi) const {
-    const double* a = lower(node);
-    const double* b = upper(node);
+    const double* a = lower<D>(node);
+    const double* b = upper<D>(node);
     for (int k = 0; k < dimension<D>(); ++k)
       if (b[k] < lo[k] || a[k] > hi[k]) return false;
     return true;
@@ -103,8 +109,8 @@ class KdTree {
   // in the interior, and hence not in the query box.
   template <int D>
   bool contains_strictly(std::int32_t node, const double* lo, const double* hi) const {
-    const double* a = lower(node);
-    const double* b = upper(node);
+    const double* a = lower<D>(node);
+    const double* b = upper<D>(node);
     for (int k = 0; k < dimension<D>(); ++k)
       if (!(a[k] < lo[k] && hi[k] < b[k])) return false;
     return true;
