@@ -79,9 +79,9 @@ std::vector<double> in_tree_order(const Cloud& c, const KdTree& tree) {
   return out;
 }
 
-void check_walks(const Cloud& cloud, unsigned seed, bool integer) {
+void check_walks(const Cloud& cloud, unsigned seed, bool integer, int leaf_size = 8) {
   KdTree tree;
-  tree.build(cloud.coords.data(), cloud.size(), cloud.dim, 8);
+  tree.build(cloud.coords.data(), cloud.size(), cloud.dim, leaf_size);
   const std::vector<double> points = in_tree_order(cloud, tree);
   // Structure: every point's leaf holds it; parent links match the preorder layout.
   for (std::int32_t id = 0; id < cloud.size(); ++id) {
@@ -122,6 +122,29 @@ void check_walks(const Cloud& cloud, unsigned seed, bool integer) {
 
 TEST(KdTree, WalksFindEveryPointInTheBoxOnRandomPoints) {
   for (int d : {2, 3, 4, 5}) check_walks(random_cloud(d, 3000, 40u + static_cast<unsigned>(d)), 7u, false);
+}
+
+TEST(KdTree, WalksFindEveryPointInTheBoxWithLargeLeaves) {
+  for (int d : {2, 3, 5}) check_walks(random_cloud(d, 3000, 50u + static_cast<unsigned>(d)), 12u, false, 48);
+  check_walks(grid_cloud(3, 12), 13u, true, 48);
+}
+
+// The point order (the engine's point ids, hence its output order) is that of the leaf size 8
+// tree for every leaf size from kOrderLeafSize up; only the number of nodes changes.
+TEST(KdTree, TheOrderDoesNotDependOnTheLeafSize) {
+  for (const Cloud& cloud : {random_cloud(2, 5000, 1u), random_cloud(3, 4000, 2u), random_cloud(5, 3000, 3u),
+                             grid_cloud(2, 30), grid_cloud(3, 10), grid_cloud(5, 4)}) {
+    KdTree fine;
+    fine.build(cloud.coords.data(), cloud.size(), cloud.dim, KdTree::kOrderLeafSize);
+    for (int leaf_size : {16, 37, 64, 200}) {
+      KdTree coarse;
+      coarse.build(cloud.coords.data(), cloud.size(), cloud.dim, leaf_size);
+      EXPECT_EQ(coarse.order(), fine.order()) << "d=" << cloud.dim << " leaf size " << leaf_size;
+      EXPECT_LT(coarse.nodes().size(), fine.nodes().size());
+      for (const KdTree::Node& node : coarse.nodes())
+        if (node.right < 0) EXPECT_LE(node.end - node.begin, leaf_size);
+    }
+  }
 }
 
 TEST(KdTree, WalksFindEveryPointInTheBoxOnGrids) {

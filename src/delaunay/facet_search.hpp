@@ -24,7 +24,7 @@
 // ball, not only its bounding box, and once there is a ball the closed side is no longer
 // tested per node (the ball leaves only a thin cap of it).
 //
-// The arithmetic is compiled for d = 2..6 (fixed-size loops) and once for any d; the same
+// The arithmetic is compiled for d = 2..8 (fixed-size loops) and once for any d; the same
 // template serves all (facet_search.cpp).
 #pragma once
 
@@ -42,9 +42,18 @@ struct SearchCounters {
   std::uint64_t candidates = 0;     // improvements of the candidate
 };
 
+// The kd-tree leaf size that makes the search fastest in dimension `dim` (measured; the table
+// in facet_search.cpp says how). The leaf size changes no result and no point id
+// (spatial/kdtree.hpp).
+int search_leaf_size(int dim);
+
 class FacetSearch {
  public:
-  FacetSearch(const PointStore& points, const SearchOptions& options);
+  // Which compilation of the search runs: the one for the points' dimension where there is
+  // one (d = 2..8), or the one for any d (the tests compare the two).
+  enum class KernelChoice { FixedDimension, AnyDimension };
+  FacetSearch(const PointStore& points, const SearchOptions& options,
+              KernelChoice choice = KernelChoice::FixedDimension);
   ~FacetSearch();
   FacetSearch(const FacetSearch&) = delete;
   FacetSearch& operator=(const FacetSearch&) = delete;

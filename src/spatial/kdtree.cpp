@@ -34,7 +34,8 @@ void KdTree::build_any(const double* coords, std::int32_t n, int dim, int leaf_s
     case 4: build_fixed<4>(coords, n, std::max(1, leaf_size), reordered); return;
     default: break;
   }
-  build_node(coords, 0, n, std::max(1, leaf_size), -1);
+  scratch_box_.assign(2 * static_cast<std::size_t>(dim), 0.0);
+  build_node(coords, 0, n, std::max(1, leaf_size), -1, true);
   if (reordered) {
     const auto d = static_cast<std::size_t>(dim);
     const std::vector<double> copy(coords, coords + static_cast<std::size_t>(n) * d);
@@ -67,7 +68,7 @@ void KdTree::build_fixed(const double* coords, std::int32_t n, int leaf_size, do
     std::copy_n(coords + static_cast<std::size_t>(i) * D, D, item.x);
     item.id = i;
   }
-  build_items(items.data(), 0, n, leaf_size, -1);
+  build_items(items.data(), 0, n, leaf_size, -1, true);
   for (std::int32_t i = 0; i < n; ++i) {
     const Item<D>& item = items[static_cast<std::size_t>(i)];
     order_[static_cast<std::size_t>(i)] = item.id;
@@ -78,9 +79,10 @@ void KdTree::build_fixed(const double* coords, std::int32_t n, int leaf_size, do
 // As build_node, step for step (std::nth_element sees the same keys in the same order, so it
 // makes the same moves: the tree is the same).
 template <class Item>
-std::int32_t KdTree::build_items(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent) {
+std::int32_t KdTree::build_items(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent,
+                                 bool emit) {
   constexpr int kDim = static_cast<int>(sizeof(Item::x) / sizeof(double));
-  const std::int32_t index = add_node(begin, end, parent);
+  const std::int32_t index = emit ? add_node(begin, end, parent) : -1;
   double lo[kDim], hi[kDim];
   for (int k = 0; k < kDim; ++k) lo[k] = hi[k] = items[begin].x[k];
   for (std::int32_t i = begin + 1; i < end; ++i)
@@ -88,30 +90,35 @@ std::int32_t KdTree::build_items(Item* items, std::int32_t begin, std::int32_t e
       lo[k] = std::min(lo[k], items[i].x[k]);
       hi[k] = std::max(hi[k], items[i].x[k]);
     }
-  std::copy_n(lo, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim]);
-  std::copy_n(hi, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim + kDim]);
   int axis = 0;
   for (int k = 1; k < kDim; ++k)
     if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-  if (end - begin <= leaf_size || hi[axis] == lo[axis]) {
-    std::fill(leaf_of_.begin() + begin, leaf_of_.begin() + end, index);
-    return index;
+  const bool leaf = end - begin <= leaf_size || hi[axis] == lo[axis];
+  if (emit) {
+    std::copy_n(lo, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim]);
+    std::copy_n(hi, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim + kDim]);
+    if (leaf) std::fill(leaf_of_.begin() + begin, leaf_of_.begin() + end, index);
   }
+  if (end - begin <= std::min(leaf_size, kOrderLeafSize) || hi[axis] == lo[axis]) return index;
   const std::int32_t middle = begin + (end - begin) / 2;
   std::nth_element(items + begin, items + middle, items + end,
                    [axis](const Item& a, const Item& b) { return a.x[axis] < b.x[axis]; });
-  nodes_[static_cast<std::size_t>(index)].split_axis = axis;
-  nodes_[static_cast<std::size_t>(index)].split_value = items[middle].x[axis];
-  build_items(items, begin, middle, leaf_size, index);
-  const std::int32_t right = build_items(items, middle, end, leaf_size, index);
-  nodes_[static_cast<std::size_t>(index)].right = right;
+  const bool children = emit && !leaf;  // else only the order is refined (see kOrderLeafSize)
+  if (children) {
+    nodes_[static_cast<std::size_t>(index)].split_axis = axis;
+    nodes_[static_cast<std::size_t>(index)].split_value = items[middle].x[axis];
+  }
+  build_items(items, begin, middle, leaf_size, index, children);
+  const std::int32_t right = build_items(items, middle, end, leaf_size, index, children);
+  if (children) nodes_[static_cast<std::size_t>(index)].right = right;
   return index;
 }
 
 std::int32_t KdTree::build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size,
-                                std::int32_t parent) {
-  const std::int32_t index = add_node(begin, end, parent);
-  double* lo = &boxes_[static_cast<std::size_t>(index) * 2 * static_cast<std::size_t>(dim_)];
+                                std::int32_t parent, bool emit) {
+  const std::int32_t index = emit ? add_node(begin, end, parent) : -1;
+  // The box is not used once the children are built (they may reallocate boxes_).
+  double* lo = emit ? &boxes_[static_cast<std::size_t>(index) * 2 * static_cast<std::size_t>(dim_)] : scratch_box_.data();
   double* hi = lo + dim_;
   auto point = [&](std::int32_t i) { return coords + static_cast<std::size_t>(order_[static_cast<std::size_t>(i)]) * dim_; };
   for (int k = 0; k < dim_; ++k) lo[k] = hi[k] = point(begin)[k];
@@ -123,10 +130,9 @@ std::int32_t KdTree::build_node(const double* coords, std::int32_t begin, std::i
   int axis = 0;
   for (int k = 1; k < dim_; ++k)
     if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-  if (end - begin <= leaf_size || hi[axis] == lo[axis]) {
-    std::fill(leaf_of_.begin() + begin, leaf_of_.begin() + end, index);
-    return index;
-  }
+  const bool leaf = end - begin <= leaf_size || hi[axis] == lo[axis];
+  if (emit && leaf) std::fill(leaf_of_.begin() + begin, leaf_of_.begin() + end, index);
+  if (end - begin <= std::min(leaf_size, kOrderLeafSize) || hi[axis] == lo[axis]) return index;
 
   const std::int32_t middle = begin + (end - begin) / 2;
   auto first = order_.begin() + begin;
@@ -136,11 +142,14 @@ std::int32_t KdTree::build_node(const double* coords, std::int32_t begin, std::i
   const double split = point(middle)[axis];
   // Left: [begin, middle), all <= split after nth_element; the boxes are tight, so a
   // coordinate equal to split on both sides is harmless.
-  nodes_[static_cast<std::size_t>(index)].split_axis = axis;
-  nodes_[static_cast<std::size_t>(index)].split_value = split;
-  build_node(coords, begin, middle, leaf_size, index);
-  const std::int32_t right = build_node(coords, middle, end, leaf_size, index);
-  nodes_[static_cast<std::size_t>(index)].right = right;
+  const bool children = emit && !leaf;  // else only the order is refined (see kOrderLeafSize)
+  if (children) {
+    nodes_[static_cast<std::size_t>(index)].split_axis = axis;
+    nodes_[static_cast<std::size_t>(index)].split_value = split;
+  }
+  build_node(coords, begin, middle, leaf_size, index, children);
+  const std::int32_t right = build_node(coords, middle, end, leaf_size, index, children);
+  if (children) nodes_[static_cast<std::size_t>(index)].right = right;
   return index;
 }
 

@@ -6,7 +6,11 @@
 // range [begin, end) of point ids and a leaf's points are contiguous in memory. Nodes are in
 // preorder (the left child of node i is i + 1), each with the tight bounding box of its points.
 // Leaves hold up to `leaf_size` points ("bucketed"), which keeps the tree shallow and the
-// innermost loop a linear scan.
+// innermost loop a linear scan. Within a leaf larger than kOrderLeafSize, the points are still
+// ordered by the same median splits down to kOrderLeafSize, so the order (the caller's point
+// ids) is the same for every leaf size >= kOrderLeafSize: the engine numbers its points in this
+// order, the order of its output follows the ids, and so the leaf size, a tuning constant,
+// changes no output byte. (Near points also stay near in memory.)
 //
 // `search` walks the tree under a query box that the visitor may shrink at any moment (the
 // paper's narrowing search region); the visitor also decides which child to enter first
@@ -23,6 +27,9 @@ namespace drange::spatial {
 
 class KdTree {
  public:
+  // The finest granularity of the point order (see above): the leaf size drange used first.
+  static constexpr int kOrderLeafSize = 8;
+
   struct Node {
     std::int32_t begin, end;  // point ids [begin, end)
     std::int32_t right;       // index of the right child; -1 for a leaf (left child is this + 1)
@@ -42,8 +49,14 @@ class KdTree {
   std::int32_t leaf_of(std::int32_t position) const { return leaf_of_[static_cast<std::size_t>(position)]; }
   std::int32_t parent(std::int32_t node) const { return parent_[static_cast<std::size_t>(node)]; }
   const std::vector<Node>& nodes() const { return nodes_; }
-  const double* lower(std::int32_t node) const { return &boxes_[static_cast<std::size_t>(node) * 2 * dim_]; }
-  const double* upper(std::int32_t node) const { return lower(node) + dim_; }
+  // The node's box. D > 0: the caller promises dim() == D (the address then needs no
+  // multiplication by a run-time value in the walk's hot loop).
+  template <int D = 0>
+  const double* lower(std::int32_t node) const {
+    return &boxes_[static_cast<std::size_t>(node) * 2 * static_cast<std::size_t>(dimension<D>())];
+  }
+  template <int D = 0>
+  const double* upper(std::int32_t node) const { return lower<D>(node) + dimension<D>(); }
   int dim() const { return dim_; }
   std::size_t memory_bytes() const;
 
@@ -64,13 +77,17 @@ class KdTree {
   std::uint64_t search_from(Visitor& visitor, std::int32_t leaf) const;
 
  private:
-  std::int32_t build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent);
+  // Builds the subtree of the points [begin, end) and returns its root; with emit false, only
+  // orders the points (the part of a leaf below kOrderLeafSize) and returns -1.
+  std::int32_t build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent,
+                          bool emit);
   // The same construction over points copied next to their index (fixed d: no indirection).
   template <int D>
   void build_fixed(const double* coords, std::int32_t n, int leaf_size, double* reordered);
   void build_any(const double* coords, std::int32_t n, int dim, int leaf_size, double* reordered);
   template <class Item>
-  std::int32_t build_items(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent);
+  std::int32_t build_items(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent,
+                           bool emit);
   // Appends a node (its box to be filled by the caller); returns its index.
   std::int32_t add_node(std::int32_t begin, std::int32_t end, std::int32_t parent);
   // The top-down walk of the subtree rooted at `root`.
@@ -80,8 +97,8 @@ class KdTree {
   int dimension() const { return D > 0 ? D : dim_; }
   template <int D>
   bool meets(std::int32_t node, const double* lo, const double* hi) const {
-    const double* a = lower(node);
-    const double* b = upper(node);
+    const double* a = lower<D>(node);
+    const double* b = upper<D>(node);
     for (int k = 0; k < dimension<D>(); ++k)
       if (b[k] < lo[k] || a[k] > hi[k]) return false;
     return true;
@@ -92,8 +109,8 @@ class KdTree {
   // in the interior, and hence not in the query box.
   template <int D>
   bool contains_strictly(std::int32_t node, const double* lo, const double* hi) const {
-    const double* a = lower(node);
-    const double* b = upper(node);
+    const double* a = lower<D>(node);
+    const double* b = upper<D>(node);
     for (int k = 0; k < dimension<D>(); ++k)
       if (!(a[k] < lo[k] && hi[k] < b[k])) return false;
     return true;
@@ -104,6 +121,7 @@ class KdTree {
   std::vector<double> boxes_;
   std::vector<std::int32_t> parent_;   // per node; -1 for the root
   std::vector<std::int32_t> leaf_of_;  // per tree position
+  std::vector<double> scratch_box_;    // build_node's box when it only orders points
 };
 
 template <int D, class Visitor>

@@ -1,0 +1,91 @@
+// tests/facet_search_test.cpp: the search compiled for a fixed d (facet_search.cpp, d = 2..8)
+// against its compilation for any d, facet by facet, and both against the triangulation.
+//
+// For every facet of a simplex, the search on the simplex's side finds the simplex's own
+// opposite vertex, and the search on the other side finds the neighbour's (or -1 on the hull).
+// Both kernels must give the same answer on both sides, with the search variants that change
+// the kernel's path, on random points and on integer points (grids, and small integer ranges
+// in d = 7, 8, where a full grid is too slow: ties on many spheres, so the exact fallback and
+// the perturbation run).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "delaunay/facet_search.hpp"
+#include "delaunay/prepare_points.hpp"
+#include "delaunay/team.hpp"
+#include "drange/delaunay.hpp"
+#include "drange/generate.hpp"
+#include "oracle.hpp"
+
+namespace {
+
+using drange::PointCloud;
+using drange::engine::FacetSearch;
+
+// The two kernels' apexes for both sides of every facet of (up to 100 of) the simplices of
+// the triangulation of `points`.
+void expect_kernels_agree(const PointCloud& points, const std::string& what) {
+  const drange::Triangulation t = drange::delaunay(points);
+  const int d = points.dim;
+  drange::engine::Team team(1);
+  std::vector<drange::Duplicate> duplicates;
+  const drange::engine::PointStore store =
+      drange::engine::prepare_points(points, drange::engine::search_leaf_size(d), duplicates, team);
+  std::vector<std::int32_t> id_of(points.size(), -1);  // input index -> the engine's point id
+  for (std::int32_t id = 0; id < store.size; ++id) id_of[static_cast<std::size_t>(store.input_index[static_cast<std::size_t>(id)])] = id;
+  const std::size_t stride = std::max<std::size_t>(1, t.size() / 100);
+  std::size_t checked = 0;
+  for (const char* variant : {"full", "paper", "no-ball"}) {
+    const drange::SearchOptions options = drange::search_variant(variant);
+    FacetSearch fixed(store, options, FacetSearch::KernelChoice::FixedDimension);
+    FacetSearch any(store, options, FacetSearch::KernelChoice::AnyDimension);
+    drange::engine::SearchCounters fixed_counters, any_counters;
+    std::size_t own_apex_found = 0;
+    checked = 0;
+    for (std::size_t s = 0; s < t.size(); s += stride, ++checked) {
+      const std::int32_t* simplex = &t.simplices[s * static_cast<std::size_t>(d + 1)];
+      for (int opposite = 0; opposite <= d; ++opposite) {
+        std::vector<std::int32_t> facet;
+        for (int i = 0; i <= d; ++i)
+          if (i != opposite) facet.push_back(id_of[static_cast<std::size_t>(simplex[i])]);
+        std::sort(facet.begin(), facet.end());
+        const std::int32_t own = id_of[static_cast<std::size_t>(simplex[opposite])];
+        for (int sigma : {1, -1}) {
+          const std::int32_t a = fixed.find_apex(facet.data(), sigma, fixed_counters);
+          const std::int32_t b = any.find_apex(facet.data(), sigma, any_counters);
+          ASSERT_EQ(a, b) << what << " variant " << variant << " simplex " << s << " facet " << opposite << " side " << sigma;
+          if (a == own) ++own_apex_found;
+        }
+      }
+    }
+    // Exactly one side of each facet is the simplex's own.
+    EXPECT_EQ(own_apex_found, checked * static_cast<std::size_t>(d + 1)) << what << " variant " << variant;
+    EXPECT_EQ(fixed_counters.points_tested, any_counters.points_tested) << what << " variant " << variant;
+  }
+}
+
+TEST(FacetSearch, FixedDimensionKernelsMatchTheAnyDimensionKernelOnRandomPoints) {
+  const std::array<std::size_t, 9> sizes = {0, 0, 300, 200, 100, 60, 40, 30, 25};
+  for (int d = 2; d <= 8; ++d)
+    expect_kernels_agree(drange::generate_points(drange::Distribution::Uniform, sizes[static_cast<std::size_t>(d)], d, 5),
+                         "uniform d=" + std::to_string(d));
+}
+
+TEST(FacetSearch, FixedDimensionKernelsMatchTheAnyDimensionKernelOnIntegerPoints) {
+  for (int d = 2; d <= 6; ++d) {  // full grids: 3^d, then 2^d from d = 4 on
+    const std::size_t side = d <= 3 ? 3 : 2;
+    std::size_t n = 1;
+    for (int k = 0; k < d; ++k) n *= side;
+    expect_kernels_agree(drange::generate_points(drange::Distribution::Grid, n, d, 1), "grid d=" + std::to_string(d));
+  }
+  for (int d = 7; d <= 8; ++d)
+    for (std::uint64_t seed : {1, 2})
+      expect_kernels_agree(drange::test::random_integer_points(30, d, 0, 2, seed),
+                           "integers in [0, 2] d=" + std::to_string(d) + " seed=" + std::to_string(seed));
+}
+
+}  // namespace
