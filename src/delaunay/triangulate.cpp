@@ -27,6 +27,7 @@
 #include "delaunay/facet_table.hpp"
 #include "delaunay/first_facet.hpp"
 #include "delaunay/prepare_points.hpp"
+#include "delaunay/simplex_facets.hpp"
 #include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
@@ -42,17 +43,6 @@ std::size_t peak_rss_bytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
-}
-
-// Sorts ids in place and returns the parity of the permutation (+1 even, -1 odd).
-int sort_with_parity(std::int32_t* ids, int n) {
-  int parity = 1;
-  for (int i = 1; i < n; ++i)
-    for (int j = i; j > 0 && ids[j - 1] > ids[j]; --j) {
-      std::swap(ids[j - 1], ids[j]);
-      parity = -parity;
-    }
-  return parity;
 }
 
 constexpr int kMaxIds = 11;  // the largest dimension (prepare_points.cpp): scratch sizes
@@ -72,7 +62,7 @@ class FacetQueue {
  public:
   explicit FacetQueue(int d) : d_(d), width_(static_cast<std::size_t>(d) + 4) {}
   void push(const std::int32_t* ids, engine::FacetOwner owner, int sigma, std::int32_t opposite) {
-    data_.insert(data_.end(), ids, ids + d_);
+    for (int k = 0; k < d_; ++k) data_.push_back(ids[k]);  // a loop: std::copy of a few ints calls memmove
     data_.push_back(owner.simplex);
     data_.push_back(owner.face);
     data_.push_back(sigma);
@@ -86,7 +76,7 @@ class FacetQueue {
   // Takes the next facet: its ids and info; returns whether it was closed while it waited.
   bool pop(std::int32_t* ids, FacetInfo& info) {
     const std::int32_t* entry = &data_[head_];
-    std::copy(entry, entry + d_, ids);
+    for (int k = 0; k < d_; ++k) ids[k] = entry[k];
     info.owner = engine::FacetOwner{entry[d_], entry[d_ + 1], static_cast<std::int64_t>(popped_)};
     info.sigma = entry[d_ + 2];
     info.opposite = entry[d_ + 3];
@@ -146,8 +136,7 @@ class Frontier {
         stats_(result.stats),
         table_(d),
         queue_(d),
-        progress_(progress),
-        other_facet_(static_cast<std::size_t>(d)) {}
+        progress_(progress) {}
 
   void open_first(const engine::FirstFacet& first) {
     queue_.push(first.ids.data(), engine::FacetOwner{-1, -1, 0}, first.sigma, -1);
@@ -185,7 +174,8 @@ class Frontier {
   engine::FacetTable table_;
   FacetQueue queue_;
   ProgressCountdown progress_;
-  std::vector<std::int32_t> other_facet_;
+  std::int32_t other_ids_[kMaxIds * kMaxIds];  // close()'s scratch: the new simplex's other facets
+  std::int32_t other_side_[kMaxIds];           // and their open sides
   std::vector<std::uint64_t> closed_after_pop_;
   bool mark_closures_ = false;
 };
@@ -201,23 +191,21 @@ void Frontier::close(const std::int32_t* ids, const FacetInfo& info, std::int32_
   // transposition of the first two vertices makes it positive.
   const auto s = static_cast<std::int32_t>(simplices_.size() / width);
   const std::size_t base = simplices_.size();
-  simplices_.insert(simplices_.end(), ids, ids + d_);
+  const bool swapped = info.sigma < 0;
+  for (int i = 0; i < d_; ++i) simplices_.push_back(ids[i]);
   simplices_.push_back(apex);
-  if (info.sigma < 0) std::swap(simplices_[base], simplices_[base + 1]);
-  neighbors_.insert(neighbors_.end(), width, -1);
-  neighbors_[base + static_cast<std::size_t>(d_)] = owner.simplex;
+  if (swapped) std::swap(simplices_[base], simplices_[base + 1]);
+  for (int i = 0; i < d_; ++i) neighbors_.push_back(-1);
+  neighbors_.push_back(owner.simplex);
   if (owner.simplex >= 0) neighbors_[static_cast<std::size_t>(owner.simplex) * width + static_cast<std::size_t>(owner.face)] = s;
   else ++stats_.hull_facets;  // the first facet lies on the hull
-  // The other facets: facet f omits vertex f. With the simplex positive, x is on the far side
-  // of facet f (its open side) where orientation with x in place of vertex f is negative.
+  // The other facets, facet f omitting vertex f: closed when open already, else opened.
+  engine::simplex_other_facets(ids, d_, apex, swapped, other_ids_, other_side_);
   for (int f = 0; f < d_; ++f) {
-    std::size_t w = 0;
-    for (int i = 0; i < width_; ++i)
-      if (i != f) other_facet_[w++] = simplices_[base + static_cast<std::size_t>(i)];
-    const int parity = sort_with_parity(other_facet_.data(), d_);
+    const std::int32_t* other = other_ids_ + f * d_;
     engine::FacetOwner seen{};
     const engine::FacetOwner mine{s, f, static_cast<std::int64_t>(queue_.pushed())};
-    if (table_.close_or_open(other_facet_.data(), mine, &seen)) {
+    if (table_.close_or_open(other, mine, &seen)) {
       neighbors_[base + static_cast<std::size_t>(f)] = seen.simplex;
       neighbors_[static_cast<std::size_t>(seen.simplex) * width + static_cast<std::size_t>(seen.face)] = s;
       if (mark_closures_) {
@@ -226,10 +214,7 @@ void Frontier::close(const std::int32_t* ids, const FacetInfo& info, std::int32_
         else closed_after_pop_.push_back(entry);
       }
     } else {
-      // Moving x from position f to the end takes d - f transpositions; sorting the rest
-      // multiplies by its parity. Open side: that orientation negative.
-      const int to_end = ((d_ - f) & 1) ? -1 : 1;
-      queue_.push(other_facet_.data(), mine, -parity * to_end, simplices_[base + static_cast<std::size_t>(f)]);
+      queue_.push(other, mine, other_side_[f], simplices_[base + static_cast<std::size_t>(f)]);
     }
   }
   progress_.simplex_found(static_cast<std::size_t>(s) + 1);
@@ -275,21 +260,13 @@ class ClosurePredictor {
 
   // S = facet + apex: remembers S's other facets.
   void found(const std::int32_t* facet, std::int32_t apex) {
-    std::int32_t other[kMaxIds];
+    std::int32_t other[kMaxIds * kMaxIds], side[kMaxIds];
+    engine::simplex_other_facets(facet, d_, apex, false, other, side);
     for (int drop = 0; drop < d_; ++drop) {
-      int w = 0;
-      bool placed = false;
-      for (int i = 0; i < d_; ++i) {
-        if (i == drop) continue;
-        if (!placed && apex < facet[i]) {
-          other[w++] = apex;
-          placed = true;
-        }
-        other[w++] = facet[i];
-      }
-      if (!placed) other[w++] = apex;
-      const std::size_t slot = hash(other);
-      std::copy(other, other + d_, keys_.begin() + static_cast<std::ptrdiff_t>(slot * static_cast<std::size_t>(d_)));
+      const std::int32_t* ids = other + drop * d_;
+      const std::size_t slot = hash(ids);
+      std::int32_t* key = &keys_[slot * static_cast<std::size_t>(d_)];
+      for (int k = 0; k < d_; ++k) key[k] = ids[k];  // loops: std::copy and std::equal of a few ints call libc
       off_[slot] = facet[drop];
     }
   }
@@ -297,7 +274,9 @@ class ClosurePredictor {
   bool closes(const std::int32_t* ids, std::int32_t opposite) const {
     const std::size_t slot = hash(ids);
     const std::int32_t* key = &keys_[slot * static_cast<std::size_t>(d_)];
-    return std::equal(ids, ids + d_, key) && off_[slot] != opposite;
+    for (int k = 0; k < d_; ++k)
+      if (ids[k] != key[k]) return false;
+    return off_[slot] != opposite;
   }
 
  private:
@@ -486,7 +465,7 @@ class SearchPipeline {
   void process(Worker& worker, std::uint64_t k) {
     const std::size_t s = slot(k);
     Result& result = results_[s];
-    std::copy(ids(s), ids(s) + d_, worker.facet.begin());
+    for (int k = 0; k < d_; ++k) worker.facet[static_cast<std::size_t>(k)] = ids(s)[k];
     const std::int32_t* facet = worker.facet.data();
     if (closed_[s].load(std::memory_order_acquire)) {
       result.outcome = Outcome::closed;
