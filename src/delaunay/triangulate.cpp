@@ -45,28 +45,39 @@ std::size_t peak_rss_bytes() {
   return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
 
-constexpr int kMaxIds = 11;  // the largest dimension (prepare_points.cpp): scratch sizes
-
 // An open facet waiting for its turn, besides its sorted ids: the simplex that opened it
-// (owner.entry is its place in the queue), the open side, and the owner's vertex opposite it.
+// (owner.entry is its place in the queue), the open side, the owner's vertex opposite it, and
+// its hash (facet_hash, computed once when the facet was derived).
 struct FacetInfo {
   engine::FacetOwner owner;
   std::int32_t sigma;
   std::int32_t opposite;  // -1 for the first facet
+  std::uint32_t hash;
 };
+
+// The other facets of the simplex found for a facet, derived apart from the shared state (with
+// threads, by the thread that found the apex, so that the calling thread only probes the table
+// and writes): a block of d (d + 2) ints, d facets of d sorted ids (simplex_facets.hpp), their
+// open sides, their hashes.
+std::size_t derived_block_size(int d) { return static_cast<std::size_t>(d) * static_cast<std::size_t>(d + 2); }
+void derive_other_facets(const std::int32_t* facet, int sigma, std::int32_t apex, int d, std::int32_t* block) {
+  engine::simplex_other_facets(facet, d, apex, sigma < 0, block, block + d * d);
+  for (int f = 0; f < d; ++f) block[d * d + d + f] = static_cast<std::int32_t>(engine::facet_hash(block + f * d, d));
+}
 
 // The open facets in FIFO order. With threads, a facet closed while it waits is marked (sigma 0),
 // so that its turn needs no table lookup. A vector read from `head_`: the consumed front is
 // dropped when it is as long as the rest, so every facet is moved at most once on average.
 class FacetQueue {
  public:
-  explicit FacetQueue(int d) : d_(d), width_(static_cast<std::size_t>(d) + 4) {}
-  void push(const std::int32_t* ids, engine::FacetOwner owner, int sigma, std::int32_t opposite) {
+  explicit FacetQueue(int d) : d_(d), width_(static_cast<std::size_t>(d) + 5) {}
+  void push(const std::int32_t* ids, std::uint32_t hash, engine::FacetOwner owner, int sigma, std::int32_t opposite) {
     for (int k = 0; k < d_; ++k) data_.push_back(ids[k]);  // a loop: std::copy of a few ints calls memmove
     data_.push_back(owner.simplex);
     data_.push_back(owner.face);
     data_.push_back(sigma);
     data_.push_back(opposite);
+    data_.push_back(static_cast<std::int32_t>(hash));
     ++pushed_;
   }
   bool empty() const { return head_ == data_.size(); }
@@ -80,6 +91,7 @@ class FacetQueue {
     info.owner = engine::FacetOwner{entry[d_], entry[d_ + 1], static_cast<std::int64_t>(popped_)};
     info.sigma = entry[d_ + 2];
     info.opposite = entry[d_ + 3];
+    info.hash = static_cast<std::uint32_t>(entry[d_ + 4]);
     head_ += width_;
     ++popped_;
     if (head_ == data_.size()) {
@@ -139,7 +151,7 @@ class Frontier {
         progress_(progress) {}
 
   void open_first(const engine::FirstFacet& first) {
-    queue_.push(first.ids.data(), engine::FacetOwner{-1, -1, 0}, first.sigma, -1);
+    queue_.push(first.ids.data(), engine::facet_hash(first.ids.data(), d_), engine::FacetOwner{-1, -1, 0}, first.sigma, -1);
   }
   bool queue_empty() const { return queue_.empty(); }
   // Takes the next facet of the queue; returns whether it was closed while it waited.
@@ -149,7 +161,7 @@ class Frontier {
   bool take(const std::int32_t* ids, const FacetInfo& info, bool closed) {
     stats_.max_open_facets = std::max(stats_.max_open_facets, table_.size());
     if (closed) return false;
-    if (info.owner.simplex < 0 || table_.remove(ids)) return true;
+    if (info.owner.simplex < 0 || table_.remove(ids, info.hash)) return true;
     if (mark_closures_) throw std::logic_error("delaunay: a queued facet is not open");
     return false;  // closed while it waited
   }
@@ -158,8 +170,9 @@ class Frontier {
   // take() makes anyway; marking there would write to a random place of the queue for every
   // closure (a cache miss each on a large 3D frontier: 5% slower).
   void mark_closures() { mark_closures_ = true; }
-  // Records the search's result for a facet that take() accepted: the apex, or -1 on the hull.
-  void close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex);
+  // Records the search's result for a facet that take() accepted: the apex, or -1 on the hull;
+  // with an apex, `derived` is derive_other_facets' block.
+  void close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex, const std::int32_t* derived);
   // Facets closed by close() that had already left the queue (threads > 1: they wait in the
   // search window); the caller marks them and clears the list.
   std::vector<std::uint64_t>& closed_after_pop() { return closed_after_pop_; }
@@ -174,13 +187,11 @@ class Frontier {
   engine::FacetTable table_;
   FacetQueue queue_;
   ProgressCountdown progress_;
-  std::int32_t other_ids_[kMaxIds * kMaxIds];  // close()'s scratch: the new simplex's other facets
-  std::int32_t other_side_[kMaxIds];           // and their open sides
   std::vector<std::uint64_t> closed_after_pop_;
   bool mark_closures_ = false;
 };
 
-void Frontier::close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex) {
+void Frontier::close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex, const std::int32_t* derived) {
   if (apex < 0) {
     ++stats_.hull_facets;
     return;
@@ -200,12 +211,14 @@ void Frontier::close(const std::int32_t* ids, const FacetInfo& info, std::int32_
   if (owner.simplex >= 0) neighbors_[static_cast<std::size_t>(owner.simplex) * width + static_cast<std::size_t>(owner.face)] = s;
   else ++stats_.hull_facets;  // the first facet lies on the hull
   // The other facets, facet f omitting vertex f: closed when open already, else opened.
-  engine::simplex_other_facets(ids, d_, apex, swapped, other_ids_, other_side_);
-  for (int f = 0; f < d_; ++f) {
-    const std::int32_t* other = other_ids_ + f * d_;
+  const int d = d_;
+  const std::int32_t* open_side = derived + d * d;
+  const std::int32_t* hash = open_side + d;
+  for (int f = 0; f < d; ++f) {
+    const std::int32_t* other = derived + f * d;
     engine::FacetOwner seen{};
     const engine::FacetOwner mine{s, f, static_cast<std::int64_t>(queue_.pushed())};
-    if (table_.close_or_open(other, mine, &seen)) {
+    if (table_.close_or_open(other, static_cast<std::uint32_t>(hash[f]), mine, &seen)) {
       neighbors_[base + static_cast<std::size_t>(f)] = seen.simplex;
       neighbors_[static_cast<std::size_t>(seen.simplex) * width + static_cast<std::size_t>(seen.face)] = s;
       if (mark_closures_) {
@@ -214,7 +227,7 @@ void Frontier::close(const std::int32_t* ids, const FacetInfo& info, std::int32_
         else closed_after_pop_.push_back(entry);
       }
     } else {
-      queue_.push(other, mine, other_side_[f], simplices_[base + static_cast<std::size_t>(f)]);
+      queue_.push(other, static_cast<std::uint32_t>(hash[f]), mine, open_side[f], simplices_[base + static_cast<std::size_t>(f)]);
     }
   }
   progress_.simplex_found(static_cast<std::size_t>(s) + 1);
@@ -235,13 +248,15 @@ struct SearchTotals {
 
 // One thread: each facet searched when its turn comes.
 void search_serially(Frontier& frontier, engine::FacetSearch& search, int d, SearchTotals& totals) {
-  std::vector<std::int32_t> ids(static_cast<std::size_t>(d));
+  std::vector<std::int32_t> ids(static_cast<std::size_t>(d)), derived(derived_block_size(d));
   FacetInfo info{};
   const std::uint64_t exact_before = geometry::exact_evaluations();
   while (!frontier.queue_empty()) {
     const bool closed = frontier.pop(ids.data(), info);
     if (!frontier.take(ids.data(), info, closed)) continue;
-    frontier.close(ids.data(), info, search.find_apex(ids.data(), info.sigma, totals.counters));
+    const std::int32_t apex = search.find_apex(ids.data(), info.sigma, totals.counters);
+    if (apex >= 0) derive_other_facets(ids.data(), info.sigma, apex, d, derived.data());
+    frontier.close(ids.data(), info, apex, derived.data());
   }
   totals.exact = geometry::exact_evaluations() - exact_before;
 }
@@ -258,21 +273,21 @@ class ClosurePredictor {
  public:
   explicit ClosurePredictor(int d) : d_(d), keys_(kSize * static_cast<std::size_t>(d), -1), off_(kSize) {}
 
-  // S = facet + apex: remembers S's other facets.
-  void found(const std::int32_t* facet, std::int32_t apex) {
-    std::int32_t other[kMaxIds * kMaxIds], side[kMaxIds];
-    engine::simplex_other_facets(facet, d_, apex, false, other, side);
-    for (int drop = 0; drop < d_; ++drop) {
-      const std::int32_t* ids = other + drop * d_;
-      const std::size_t slot = hash(ids);
-      std::int32_t* key = &keys_[slot * static_cast<std::size_t>(d_)];
-      for (int k = 0; k < d_; ++k) key[k] = ids[k];  // loops: std::copy and std::equal of a few ints call libc
-      off_[slot] = facet[drop];
+  // S = facet + apex: remembers S's other facets, from derive_other_facets' block (its facet
+  // f omits the recorded simplex's vertex f: facet[f], or facet[1 - f] when sigma < 0 and f < 2).
+  void found(const std::int32_t* facet, int sigma, const std::int32_t* derived) {
+    const int d = d_;
+    for (int f = 0; f < d; ++f) {
+      const std::int32_t* ids = derived + f * d;
+      const std::size_t slot = slot_of(static_cast<std::uint32_t>(derived[d * d + d + f]));
+      std::int32_t* key = &keys_[slot * static_cast<std::size_t>(d)];
+      for (int k = 0; k < d; ++k) key[k] = ids[k];  // loops: std::copy and std::equal of a few ints call libc
+      off_[slot] = facet[(sigma < 0 && f < 2) ? 1 - f : f];
     }
   }
   // True when a simplex found earlier closes the queued facet.
-  bool closes(const std::int32_t* ids, std::int32_t opposite) const {
-    const std::size_t slot = hash(ids);
+  bool closes(const std::int32_t* ids, std::uint32_t hash, std::int32_t opposite) const {
+    const std::size_t slot = slot_of(hash);
     const std::int32_t* key = &keys_[slot * static_cast<std::size_t>(d_)];
     for (int k = 0; k < d_; ++k)
       if (ids[k] != key[k]) return false;
@@ -280,12 +295,10 @@ class ClosurePredictor {
   }
 
  private:
-  static constexpr std::size_t kSize = 1024;
-  std::size_t hash(const std::int32_t* ids) const {
-    std::uint64_t h = 0;
-    for (int k = 0; k < d_; ++k) h = (h ^ static_cast<std::uint32_t>(ids[k])) * 0x9E3779B97F4A7C15ull;
-    return static_cast<std::size_t>(h >> 54) & (kSize - 1);
-  }
+  static constexpr int kBits = 10;
+  static constexpr std::size_t kSize = std::size_t{1} << kBits;
+  // The facet hash's high bits: the table's slots use the low ones.
+  static std::size_t slot_of(std::uint32_t hash) { return hash >> (32 - kBits); }
   int d_;
   std::vector<std::int32_t> keys_;  // kSize * d sorted ids
   std::vector<std::int32_t> off_;   // the vertex of S off the key facet
@@ -318,6 +331,7 @@ class SearchPipeline {
     ids_.resize(window * static_cast<std::size_t>(d_));
     info_.resize(window);
     results_.resize(window);
+    derived_.resize(window * derived_block_size(d_));
     closed_.reset(new std::atomic<bool>[window]);
     done_.reset(new std::atomic<std::uint64_t>[window]);
     for (std::size_t i = 0; i < window; ++i) {
@@ -376,6 +390,7 @@ class SearchPipeline {
 
   std::size_t slot(std::uint64_t k) const { return static_cast<std::size_t>(k) & mask_; }
   std::int32_t* ids(std::size_t slot) { return &ids_[slot * static_cast<std::size_t>(d_)]; }
+  std::int32_t* derived(std::size_t slot) { return &derived_[slot * derived_block_size(d_)]; }
   bool done(std::uint64_t k) const { return done_[slot(k)].load(std::memory_order_acquire) == k + 1; }
 
   // The calling thread: takes the turns in order as their results come in, and searches runs
@@ -422,7 +437,7 @@ class SearchPipeline {
     }
     if (result.outcome != Outcome::searched) throw std::logic_error("delaunay: a facet predicted closed is open");
     totals.add(engine::SearchCounters{result.calls, result.points_tested, result.candidates}, result.exact);
-    frontier_.close(ids(s), info_[s], result.apex);
+    frontier_.close(ids(s), info_[s], result.apex, derived(s));
     for (std::uint64_t entry : frontier_.closed_after_pop()) closed_[slot(entry)].store(true, std::memory_order_release);
     frontier_.closed_after_pop().clear();
   }
@@ -469,7 +484,7 @@ class SearchPipeline {
     const std::int32_t* facet = worker.facet.data();
     if (closed_[s].load(std::memory_order_acquire)) {
       result.outcome = Outcome::closed;
-    } else if (worker.predictor.closes(facet, info_[s].opposite)) {
+    } else if (worker.predictor.closes(facet, info_[s].hash, info_[s].opposite)) {
       result.outcome = Outcome::predicted;
     } else {
       const std::uint64_t before = geometry::exact_evaluations();
@@ -480,7 +495,11 @@ class SearchPipeline {
       result.candidates = static_cast<std::uint32_t>(counters.candidates);
       result.exact = geometry::exact_evaluations() - before;
       result.outcome = Outcome::searched;
-      if (result.apex >= 0) worker.predictor.found(facet, result.apex);
+      if (result.apex >= 0) {
+        std::int32_t* block = derived(s);
+        derive_other_facets(facet, info_[s].sigma, result.apex, d_, block);
+        worker.predictor.found(facet, info_[s].sigma, block);
+      }
     }
     done_[s].store(k + 1, std::memory_order_release);
   }
@@ -537,6 +556,7 @@ class SearchPipeline {
   std::vector<std::int32_t> ids_;  // d per slot, written by the calling thread as facets enter
   std::vector<FacetInfo> info_;    // likewise
   std::vector<Result> results_;    // written by the thread that claimed the facet
+  std::vector<std::int32_t> derived_;  // likewise: derive_other_facets' block per slot, with an apex
   std::unique_ptr<std::atomic<bool>[]> closed_;         // set by the calling thread: closed since it entered
   std::unique_ptr<std::atomic<std::uint64_t>[]> done_;  // k + 1 once the result of facet k is in
   alignas(64) std::atomic<std::uint64_t> filled_{0};   // facets [0, filled) have entered the window
