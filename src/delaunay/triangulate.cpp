@@ -140,7 +140,7 @@ class ProgressCountdown {
 // was found while it waited) or gets the result of its search, which close() records.
 class Frontier {
  public:
-  Frontier(int d, Triangulation& result, const std::function<void(std::size_t)>& progress)
+  Frontier(int d, std::int32_t points, Triangulation& result, const std::function<void(std::size_t)>& progress)
       : d_(d),
         width_(d + 1),
         simplices_(result.simplices),
@@ -148,7 +148,16 @@ class Frontier {
         stats_(result.stats),
         table_(d),
         queue_(d),
-        progress_(progress) {}
+        progress_(progress) {
+    // Room for the simplices up front: growing by doubling copies them all once more, on the
+    // calling thread. A plane triangulation of n points has at most 2n - 5 triangles; uniform
+    // points in 3D give about 6.8n tetrahedra (more are possible: the vectors then grow).
+    // Reserving only takes address space; pages are committed as simplices are written.
+    const auto n = static_cast<std::size_t>(points);
+    const std::size_t expected = d == 2 ? 2 * n : d == 3 ? n * 68 / 10 : 0;
+    simplices_.reserve(expected * static_cast<std::size_t>(width_));
+    neighbors_.reserve(expected * static_cast<std::size_t>(width_));
+  }
 
   void open_first(const engine::FirstFacet& first) {
     queue_.push(first.ids.data(), engine::facet_hash(first.ids.data(), d_), engine::FacetOwner{-1, -1, 0}, first.sigma, -1);
@@ -602,7 +611,7 @@ Triangulation delaunay(PointsView input, const Options& options) {
 
   phase = Clock::now();
   std::vector<std::int32_t>& simplices = result.simplices;
-  Frontier frontier(d, result, options.progress);
+  Frontier frontier(d, points.size, result, options.progress);
   frontier.open_first(first);
   SearchTotals totals;
   if (team.threads() == 1) {
