@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "delaunay/facet_queue.hpp"
 #include "delaunay/facet_search.hpp"
 #include "delaunay/facet_table.hpp"
 #include "delaunay/first_facet.hpp"
@@ -36,6 +37,8 @@
 namespace drange {
 namespace {
 
+using engine::FacetInfo;
+using engine::FacetQueue;
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
@@ -44,16 +47,6 @@ std::size_t peak_rss_bytes() {
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
-
-// An open facet waiting for its turn, besides its sorted ids: the simplex that opened it
-// (owner.entry is its place in the queue), the open side, the owner's vertex opposite it, and
-// its hash (facet_hash, computed once when the facet was derived).
-struct FacetInfo {
-  engine::FacetOwner owner;
-  std::int32_t sigma;
-  std::int32_t opposite;  // -1 for the first facet
-  std::uint32_t hash;
-};
 
 // The other facets of the simplex found for a facet, derived apart from the shared state (with
 // threads, by the thread that found the apex, so that the calling thread only probes the table
@@ -64,55 +57,6 @@ void derive_other_facets(const std::int32_t* facet, int sigma, std::int32_t apex
   engine::simplex_other_facets(facet, d, apex, sigma < 0, block, block + d * d);
   for (int f = 0; f < d; ++f) block[d * d + d + f] = static_cast<std::int32_t>(engine::facet_hash(block + f * d, d));
 }
-
-// The open facets in FIFO order. With threads, a facet closed while it waits is marked (sigma 0),
-// so that its turn needs no table lookup. A vector read from `head_`: the consumed front is
-// dropped when it is as long as the rest, so every facet is moved at most once on average.
-class FacetQueue {
- public:
-  explicit FacetQueue(int d) : d_(d), width_(static_cast<std::size_t>(d) + 5) {}
-  void push(const std::int32_t* ids, std::uint32_t hash, engine::FacetOwner owner, int sigma, std::int32_t opposite) {
-    for (int k = 0; k < d_; ++k) data_.push_back(ids[k]);  // a loop: std::copy of a few ints calls memmove
-    data_.push_back(owner.simplex);
-    data_.push_back(owner.face);
-    data_.push_back(sigma);
-    data_.push_back(opposite);
-    data_.push_back(static_cast<std::int32_t>(hash));
-    ++pushed_;
-  }
-  bool empty() const { return head_ == data_.size(); }
-  // The place in the queue that the next push gets, and that the next pop returns.
-  std::uint64_t pushed() const { return pushed_; }
-  std::uint64_t popped() const { return popped_; }
-  // Takes the next facet: its ids and info; returns whether it was closed while it waited.
-  bool pop(std::int32_t* ids, FacetInfo& info) {
-    const std::int32_t* entry = &data_[head_];
-    for (int k = 0; k < d_; ++k) ids[k] = entry[k];
-    info.owner = engine::FacetOwner{entry[d_], entry[d_ + 1], static_cast<std::int64_t>(popped_)};
-    info.sigma = entry[d_ + 2];
-    info.opposite = entry[d_ + 3];
-    info.hash = static_cast<std::uint32_t>(entry[d_ + 4]);
-    head_ += width_;
-    ++popped_;
-    if (head_ == data_.size()) {
-      data_.clear();
-      head_ = 0;
-    } else if (head_ >= (std::size_t{1} << 16) && head_ >= data_.size() - head_) {
-      data_.erase(data_.begin(), data_.begin() + static_cast<std::ptrdiff_t>(head_));
-      head_ = 0;
-    }
-    return info.sigma == 0;
-  }
-  // Marks the facet at place `entry` (still in the queue) closed.
-  void mark_closed(std::uint64_t entry) { data_[head_ + static_cast<std::size_t>(entry - popped_) * width_ + static_cast<std::size_t>(d_ + 2)] = 0; }
-
- private:
-  int d_;
-  std::size_t width_;
-  std::uint64_t pushed_ = 0, popped_ = 0;
-  std::size_t head_ = 0;  // where the next facet starts in data_
-  std::vector<std::int32_t> data_;
-};
 
 // Calls Options::progress every kProgressInterval simplices, counting down so that the main
 // loop pays one decrement and one test per simplex (no clock read: the callback reads its own
