@@ -53,9 +53,15 @@ std::size_t peak_rss_bytes() {
 // and writes): a block of d (d + 2) ints, d facets of d sorted ids (simplex_facets.hpp), their
 // open sides, their hashes.
 std::size_t derived_block_size(int d) { return static_cast<std::size_t>(d) * static_cast<std::size_t>(d + 2); }
-void derive_other_facets(const std::int32_t* facet, int sigma, std::int32_t apex, int d, std::int32_t* block) {
+inline void derive_in(const std::int32_t* facet, int sigma, std::int32_t apex, int d, std::int32_t* block) {
   engine::simplex_other_facets(facet, d, apex, sigma < 0, block, block + d * d);
   for (int f = 0; f < d; ++f) block[d * d + d + f] = static_cast<std::int32_t>(engine::facet_hash(block + f * d, d));
+}
+void derive_other_facets(const std::int32_t* facet, int sigma, std::int32_t apex, int d, std::int32_t* block) {
+  // The common dimensions with d a constant: the compiler unrolls the short loops.
+  if (d == 2) derive_in(facet, sigma, apex, 2, block);
+  else if (d == 3) derive_in(facet, sigma, apex, 3, block);
+  else derive_in(facet, sigma, apex, d, block);
 }
 
 // Calls Options::progress every kProgressInterval simplices, counting down so that the main
