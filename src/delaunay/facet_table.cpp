@@ -5,15 +5,14 @@
 
 namespace drange::engine {
 
-long FacetTable::find(const std::int32_t* ids, std::uint64_t h) const {
+long FacetTable::find(const std::int32_t* ids, std::uint32_t h) const {
   for (std::size_t slot = h & mask_;; slot = (slot + 1) & mask_) {
     if (empty(slot)) return -1;
     if (equal(slot, ids)) return static_cast<long>(slot);
   }
 }
 
-bool FacetTable::close_or_open(const std::int32_t* ids, FacetOwner owner, FacetOwner* other) {
-  const std::uint64_t h = hash(ids);
+bool FacetTable::close_or_open(const std::int32_t* ids, std::uint32_t h, FacetOwner owner, FacetOwner* other) {
   std::size_t slot = h & mask_;
   for (;; slot = (slot + 1) & mask_) {
     if (empty(slot)) break;
@@ -23,8 +22,11 @@ bool FacetTable::close_or_open(const std::int32_t* ids, FacetOwner owner, FacetO
       return true;
     }
   }
-  std::copy(ids, ids + d_, slot_ids(slot));
+  std::int32_t* entry = slot_ids(slot);
+  const int d = d_;
+  for (int k = 0; k < d; ++k) entry[k] = ids[k];  // a loop: std::copy of a few ints calls memmove
   set_owner(slot, owner);
+  entry[d + 4] = static_cast<std::int32_t>(h);
   if (++size_ * 2 > mask_ + 1) rehash((mask_ + 1) * 2);
   return false;
 }
@@ -37,11 +39,13 @@ void FacetTable::erase(std::size_t hole) {
   for (;;) {
     next = (next + 1) & mask_;
     if (empty(next)) break;
-    const std::size_t home = hash(slot_ids(next)) & mask_;
+    const std::size_t home = stored_hash(next) & mask_;
     // The entry at `next` may move to `hole` if its home is not in the cyclic range (hole, next].
     const bool home_after_hole = (next > hole) ? (home > hole && home <= next) : (home > hole || home <= next);
     if (home_after_hole) continue;
-    std::copy(slot_ids(next), slot_ids(next) + stride(), slot_ids(hole));  // ids and owner
+    const std::int32_t* from = slot_ids(next);
+    std::int32_t* to = slot_ids(hole);
+    for (std::size_t k = 0, n = stride(); k < n; ++k) to[k] = from[k];  // ids, owner and hash
     hole = next;
   }
   slot_ids(hole)[0] = -1;
@@ -55,7 +59,7 @@ void FacetTable::rehash(std::size_t capacity) {
   for (std::size_t s = 0; s < old_capacity; ++s) {
     const std::int32_t* entry = &old[s * stride()];
     if (entry[0] < 0) continue;
-    std::size_t slot = hash(entry) & mask_;
+    std::size_t slot = static_cast<std::uint32_t>(entry[d_ + 4]) & mask_;
     while (!empty(slot)) slot = (slot + 1) & mask_;
     std::copy(entry, entry + stride(), slot_ids(slot));
   }

@@ -23,10 +23,12 @@
 #include <utility>
 #include <vector>
 
+#include "delaunay/facet_queue.hpp"
 #include "delaunay/facet_search.hpp"
 #include "delaunay/facet_table.hpp"
 #include "delaunay/first_facet.hpp"
 #include "delaunay/prepare_points.hpp"
+#include "delaunay/simplex_facets.hpp"
 #include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
@@ -35,6 +37,8 @@
 namespace drange {
 namespace {
 
+using engine::FacetInfo;
+using engine::FacetQueue;
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
@@ -44,73 +48,21 @@ std::size_t peak_rss_bytes() {
   return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
 
-// Sorts ids in place and returns the parity of the permutation (+1 even, -1 odd).
-int sort_with_parity(std::int32_t* ids, int n) {
-  int parity = 1;
-  for (int i = 1; i < n; ++i)
-    for (int j = i; j > 0 && ids[j - 1] > ids[j]; --j) {
-      std::swap(ids[j - 1], ids[j]);
-      parity = -parity;
-    }
-  return parity;
+// The other facets of the simplex found for a facet, derived apart from the shared state (with
+// threads, by the thread that found the apex, so that the calling thread only probes the table
+// and writes): a block of d (d + 2) ints, d facets of d sorted ids (simplex_facets.hpp), their
+// open sides, their hashes.
+std::size_t derived_block_size(int d) { return static_cast<std::size_t>(d) * static_cast<std::size_t>(d + 2); }
+inline void derive_in(const std::int32_t* facet, int sigma, std::int32_t apex, int d, std::int32_t* block) {
+  engine::simplex_other_facets(facet, d, apex, sigma < 0, block, block + d * d);
+  for (int f = 0; f < d; ++f) block[d * d + d + f] = static_cast<std::int32_t>(engine::facet_hash(block + f * d, d));
 }
-
-constexpr int kMaxIds = 11;  // the largest dimension (prepare_points.cpp): scratch sizes
-
-// An open facet waiting for its turn, besides its sorted ids: the simplex that opened it
-// (owner.entry is its place in the queue), the open side, and the owner's vertex opposite it.
-struct FacetInfo {
-  engine::FacetOwner owner;
-  std::int32_t sigma;
-  std::int32_t opposite;  // -1 for the first facet
-};
-
-// The open facets in FIFO order. With threads, a facet closed while it waits is marked (sigma 0),
-// so that its turn needs no table lookup. A vector read from `head_`: the consumed front is
-// dropped when it is as long as the rest, so every facet is moved at most once on average.
-class FacetQueue {
- public:
-  explicit FacetQueue(int d) : d_(d), width_(static_cast<std::size_t>(d) + 4) {}
-  void push(const std::int32_t* ids, engine::FacetOwner owner, int sigma, std::int32_t opposite) {
-    data_.insert(data_.end(), ids, ids + d_);
-    data_.push_back(owner.simplex);
-    data_.push_back(owner.face);
-    data_.push_back(sigma);
-    data_.push_back(opposite);
-    ++pushed_;
-  }
-  bool empty() const { return head_ == data_.size(); }
-  // The place in the queue that the next push gets, and that the next pop returns.
-  std::uint64_t pushed() const { return pushed_; }
-  std::uint64_t popped() const { return popped_; }
-  // Takes the next facet: its ids and info; returns whether it was closed while it waited.
-  bool pop(std::int32_t* ids, FacetInfo& info) {
-    const std::int32_t* entry = &data_[head_];
-    std::copy(entry, entry + d_, ids);
-    info.owner = engine::FacetOwner{entry[d_], entry[d_ + 1], static_cast<std::int64_t>(popped_)};
-    info.sigma = entry[d_ + 2];
-    info.opposite = entry[d_ + 3];
-    head_ += width_;
-    ++popped_;
-    if (head_ == data_.size()) {
-      data_.clear();
-      head_ = 0;
-    } else if (head_ >= (std::size_t{1} << 16) && head_ >= data_.size() - head_) {
-      data_.erase(data_.begin(), data_.begin() + static_cast<std::ptrdiff_t>(head_));
-      head_ = 0;
-    }
-    return info.sigma == 0;
-  }
-  // Marks the facet at place `entry` (still in the queue) closed.
-  void mark_closed(std::uint64_t entry) { data_[head_ + static_cast<std::size_t>(entry - popped_) * width_ + static_cast<std::size_t>(d_ + 2)] = 0; }
-
- private:
-  int d_;
-  std::size_t width_;
-  std::uint64_t pushed_ = 0, popped_ = 0;
-  std::size_t head_ = 0;  // where the next facet starts in data_
-  std::vector<std::int32_t> data_;
-};
+void derive_other_facets(const std::int32_t* facet, int sigma, std::int32_t apex, int d, std::int32_t* block) {
+  // The common dimensions with d a constant: the compiler unrolls the short loops.
+  if (d == 2) derive_in(facet, sigma, apex, 2, block);
+  else if (d == 3) derive_in(facet, sigma, apex, 3, block);
+  else derive_in(facet, sigma, apex, d, block);
+}
 
 // Calls Options::progress every kProgressInterval simplices, counting down so that the main
 // loop pays one decrement and one test per simplex (no clock read: the callback reads its own
@@ -138,7 +90,7 @@ class ProgressCountdown {
 // was found while it waited) or gets the result of its search, which close() records.
 class Frontier {
  public:
-  Frontier(int d, Triangulation& result, const std::function<void(std::size_t)>& progress)
+  Frontier(int d, std::int32_t points, Triangulation& result, const std::function<void(std::size_t)>& progress)
       : d_(d),
         width_(d + 1),
         simplices_(result.simplices),
@@ -146,11 +98,19 @@ class Frontier {
         stats_(result.stats),
         table_(d),
         queue_(d),
-        progress_(progress),
-        other_facet_(static_cast<std::size_t>(d)) {}
+        progress_(progress) {
+    // Room for the simplices up front: growing by doubling copies them all once more, on the
+    // calling thread. A plane triangulation of n points has at most 2n - 5 triangles; uniform
+    // points in 3D give about 6.8n tetrahedra (more are possible: the vectors then grow).
+    // Reserving only takes address space; pages are committed as simplices are written.
+    const auto n = static_cast<std::size_t>(points);
+    const std::size_t expected = d == 2 ? 2 * n : d == 3 ? n * 68 / 10 : 0;
+    simplices_.reserve(expected * static_cast<std::size_t>(width_));
+    neighbors_.reserve(expected * static_cast<std::size_t>(width_));
+  }
 
   void open_first(const engine::FirstFacet& first) {
-    queue_.push(first.ids.data(), engine::FacetOwner{-1, -1, 0}, first.sigma, -1);
+    queue_.push(first.ids.data(), engine::facet_hash(first.ids.data(), d_), engine::FacetOwner{-1, -1, 0}, first.sigma, -1);
   }
   bool queue_empty() const { return queue_.empty(); }
   // Takes the next facet of the queue; returns whether it was closed while it waited.
@@ -160,7 +120,7 @@ class Frontier {
   bool take(const std::int32_t* ids, const FacetInfo& info, bool closed) {
     stats_.max_open_facets = std::max(stats_.max_open_facets, table_.size());
     if (closed) return false;
-    if (info.owner.simplex < 0 || table_.remove(ids)) return true;
+    if (info.owner.simplex < 0 || table_.remove(ids, info.hash)) return true;
     if (mark_closures_) throw std::logic_error("delaunay: a queued facet is not open");
     return false;  // closed while it waited
   }
@@ -169,8 +129,9 @@ class Frontier {
   // take() makes anyway; marking there would write to a random place of the queue for every
   // closure (a cache miss each on a large 3D frontier: 5% slower).
   void mark_closures() { mark_closures_ = true; }
-  // Records the search's result for a facet that take() accepted: the apex, or -1 on the hull.
-  void close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex);
+  // Records the search's result for a facet that take() accepted: the apex, or -1 on the hull;
+  // with an apex, `derived` is derive_other_facets' block.
+  void close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex, const std::int32_t* derived);
   // Facets closed by close() that had already left the queue (threads > 1: they wait in the
   // search window); the caller marks them and clears the list.
   std::vector<std::uint64_t>& closed_after_pop() { return closed_after_pop_; }
@@ -185,12 +146,11 @@ class Frontier {
   engine::FacetTable table_;
   FacetQueue queue_;
   ProgressCountdown progress_;
-  std::vector<std::int32_t> other_facet_;
   std::vector<std::uint64_t> closed_after_pop_;
   bool mark_closures_ = false;
 };
 
-void Frontier::close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex) {
+void Frontier::close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex, const std::int32_t* derived) {
   if (apex < 0) {
     ++stats_.hull_facets;
     return;
@@ -201,23 +161,23 @@ void Frontier::close(const std::int32_t* ids, const FacetInfo& info, std::int32_
   // transposition of the first two vertices makes it positive.
   const auto s = static_cast<std::int32_t>(simplices_.size() / width);
   const std::size_t base = simplices_.size();
-  simplices_.insert(simplices_.end(), ids, ids + d_);
+  const bool swapped = info.sigma < 0;
+  for (int i = 0; i < d_; ++i) simplices_.push_back(ids[i]);
   simplices_.push_back(apex);
-  if (info.sigma < 0) std::swap(simplices_[base], simplices_[base + 1]);
-  neighbors_.insert(neighbors_.end(), width, -1);
-  neighbors_[base + static_cast<std::size_t>(d_)] = owner.simplex;
+  if (swapped) std::swap(simplices_[base], simplices_[base + 1]);
+  for (int i = 0; i < d_; ++i) neighbors_.push_back(-1);
+  neighbors_.push_back(owner.simplex);
   if (owner.simplex >= 0) neighbors_[static_cast<std::size_t>(owner.simplex) * width + static_cast<std::size_t>(owner.face)] = s;
   else ++stats_.hull_facets;  // the first facet lies on the hull
-  // The other facets: facet f omits vertex f. With the simplex positive, x is on the far side
-  // of facet f (its open side) where orientation with x in place of vertex f is negative.
-  for (int f = 0; f < d_; ++f) {
-    std::size_t w = 0;
-    for (int i = 0; i < width_; ++i)
-      if (i != f) other_facet_[w++] = simplices_[base + static_cast<std::size_t>(i)];
-    const int parity = sort_with_parity(other_facet_.data(), d_);
+  // The other facets, facet f omitting vertex f: closed when open already, else opened.
+  const int d = d_;
+  const std::int32_t* open_side = derived + d * d;
+  const std::int32_t* hash = open_side + d;
+  for (int f = 0; f < d; ++f) {
+    const std::int32_t* other = derived + f * d;
     engine::FacetOwner seen{};
     const engine::FacetOwner mine{s, f, static_cast<std::int64_t>(queue_.pushed())};
-    if (table_.close_or_open(other_facet_.data(), mine, &seen)) {
+    if (table_.close_or_open(other, static_cast<std::uint32_t>(hash[f]), mine, &seen)) {
       neighbors_[base + static_cast<std::size_t>(f)] = seen.simplex;
       neighbors_[static_cast<std::size_t>(seen.simplex) * width + static_cast<std::size_t>(seen.face)] = s;
       if (mark_closures_) {
@@ -226,10 +186,7 @@ void Frontier::close(const std::int32_t* ids, const FacetInfo& info, std::int32_
         else closed_after_pop_.push_back(entry);
       }
     } else {
-      // Moving x from position f to the end takes d - f transpositions; sorting the rest
-      // multiplies by its parity. Open side: that orientation negative.
-      const int to_end = ((d_ - f) & 1) ? -1 : 1;
-      queue_.push(other_facet_.data(), mine, -parity * to_end, simplices_[base + static_cast<std::size_t>(f)]);
+      queue_.push(other, static_cast<std::uint32_t>(hash[f]), mine, open_side[f], simplices_[base + static_cast<std::size_t>(f)]);
     }
   }
   progress_.simplex_found(static_cast<std::size_t>(s) + 1);
@@ -250,13 +207,15 @@ struct SearchTotals {
 
 // One thread: each facet searched when its turn comes.
 void search_serially(Frontier& frontier, engine::FacetSearch& search, int d, SearchTotals& totals) {
-  std::vector<std::int32_t> ids(static_cast<std::size_t>(d));
+  std::vector<std::int32_t> ids(static_cast<std::size_t>(d)), derived(derived_block_size(d));
   FacetInfo info{};
   const std::uint64_t exact_before = geometry::exact_evaluations();
   while (!frontier.queue_empty()) {
     const bool closed = frontier.pop(ids.data(), info);
     if (!frontier.take(ids.data(), info, closed)) continue;
-    frontier.close(ids.data(), info, search.find_apex(ids.data(), info.sigma, totals.counters));
+    const std::int32_t apex = search.find_apex(ids.data(), info.sigma, totals.counters);
+    if (apex >= 0) derive_other_facets(ids.data(), info.sigma, apex, d, derived.data());
+    frontier.close(ids.data(), info, apex, derived.data());
   }
   totals.exact = geometry::exact_evaluations() - exact_before;
 }
@@ -273,40 +232,32 @@ class ClosurePredictor {
  public:
   explicit ClosurePredictor(int d) : d_(d), keys_(kSize * static_cast<std::size_t>(d), -1), off_(kSize) {}
 
-  // S = facet + apex: remembers S's other facets.
-  void found(const std::int32_t* facet, std::int32_t apex) {
-    std::int32_t other[kMaxIds];
-    for (int drop = 0; drop < d_; ++drop) {
-      int w = 0;
-      bool placed = false;
-      for (int i = 0; i < d_; ++i) {
-        if (i == drop) continue;
-        if (!placed && apex < facet[i]) {
-          other[w++] = apex;
-          placed = true;
-        }
-        other[w++] = facet[i];
-      }
-      if (!placed) other[w++] = apex;
-      const std::size_t slot = hash(other);
-      std::copy(other, other + d_, keys_.begin() + static_cast<std::ptrdiff_t>(slot * static_cast<std::size_t>(d_)));
-      off_[slot] = facet[drop];
+  // S = facet + apex: remembers S's other facets, from derive_other_facets' block (its facet
+  // f omits the recorded simplex's vertex f: facet[f], or facet[1 - f] when sigma < 0 and f < 2).
+  void found(const std::int32_t* facet, int sigma, const std::int32_t* derived) {
+    const int d = d_;
+    for (int f = 0; f < d; ++f) {
+      const std::int32_t* ids = derived + f * d;
+      const std::size_t slot = slot_of(static_cast<std::uint32_t>(derived[d * d + d + f]));
+      std::int32_t* key = &keys_[slot * static_cast<std::size_t>(d)];
+      for (int k = 0; k < d; ++k) key[k] = ids[k];  // loops: std::copy and std::equal of a few ints call libc
+      off_[slot] = facet[(sigma < 0 && f < 2) ? 1 - f : f];
     }
   }
   // True when a simplex found earlier closes the queued facet.
-  bool closes(const std::int32_t* ids, std::int32_t opposite) const {
-    const std::size_t slot = hash(ids);
+  bool closes(const std::int32_t* ids, std::uint32_t hash, std::int32_t opposite) const {
+    const std::size_t slot = slot_of(hash);
     const std::int32_t* key = &keys_[slot * static_cast<std::size_t>(d_)];
-    return std::equal(ids, ids + d_, key) && off_[slot] != opposite;
+    for (int k = 0; k < d_; ++k)
+      if (ids[k] != key[k]) return false;
+    return off_[slot] != opposite;
   }
 
  private:
-  static constexpr std::size_t kSize = 1024;
-  std::size_t hash(const std::int32_t* ids) const {
-    std::uint64_t h = 0;
-    for (int k = 0; k < d_; ++k) h = (h ^ static_cast<std::uint32_t>(ids[k])) * 0x9E3779B97F4A7C15ull;
-    return static_cast<std::size_t>(h >> 54) & (kSize - 1);
-  }
+  static constexpr int kBits = 10;
+  static constexpr std::size_t kSize = std::size_t{1} << kBits;
+  // The facet hash's high bits: the table's slots use the low ones.
+  static std::size_t slot_of(std::uint32_t hash) { return hash >> (32 - kBits); }
   int d_;
   std::vector<std::int32_t> keys_;  // kSize * d sorted ids
   std::vector<std::int32_t> off_;   // the vertex of S off the key facet
@@ -339,6 +290,7 @@ class SearchPipeline {
     ids_.resize(window * static_cast<std::size_t>(d_));
     info_.resize(window);
     results_.resize(window);
+    derived_.resize(window * derived_block_size(d_));
     closed_.reset(new std::atomic<bool>[window]);
     done_.reset(new std::atomic<std::uint64_t>[window]);
     for (std::size_t i = 0; i < window; ++i) {
@@ -397,6 +349,7 @@ class SearchPipeline {
 
   std::size_t slot(std::uint64_t k) const { return static_cast<std::size_t>(k) & mask_; }
   std::int32_t* ids(std::size_t slot) { return &ids_[slot * static_cast<std::size_t>(d_)]; }
+  std::int32_t* derived(std::size_t slot) { return &derived_[slot * derived_block_size(d_)]; }
   bool done(std::uint64_t k) const { return done_[slot(k)].load(std::memory_order_acquire) == k + 1; }
 
   // The calling thread: takes the turns in order as their results come in, and searches runs
@@ -443,7 +396,7 @@ class SearchPipeline {
     }
     if (result.outcome != Outcome::searched) throw std::logic_error("delaunay: a facet predicted closed is open");
     totals.add(engine::SearchCounters{result.calls, result.points_tested, result.candidates}, result.exact);
-    frontier_.close(ids(s), info_[s], result.apex);
+    frontier_.close(ids(s), info_[s], result.apex, derived(s));
     for (std::uint64_t entry : frontier_.closed_after_pop()) closed_[slot(entry)].store(true, std::memory_order_release);
     frontier_.closed_after_pop().clear();
   }
@@ -486,11 +439,11 @@ class SearchPipeline {
   void process(Worker& worker, std::uint64_t k) {
     const std::size_t s = slot(k);
     Result& result = results_[s];
-    std::copy(ids(s), ids(s) + d_, worker.facet.begin());
+    for (int k = 0; k < d_; ++k) worker.facet[static_cast<std::size_t>(k)] = ids(s)[k];
     const std::int32_t* facet = worker.facet.data();
     if (closed_[s].load(std::memory_order_acquire)) {
       result.outcome = Outcome::closed;
-    } else if (worker.predictor.closes(facet, info_[s].opposite)) {
+    } else if (worker.predictor.closes(facet, info_[s].hash, info_[s].opposite)) {
       result.outcome = Outcome::predicted;
     } else {
       const std::uint64_t before = geometry::exact_evaluations();
@@ -501,7 +454,11 @@ class SearchPipeline {
       result.candidates = static_cast<std::uint32_t>(counters.candidates);
       result.exact = geometry::exact_evaluations() - before;
       result.outcome = Outcome::searched;
-      if (result.apex >= 0) worker.predictor.found(facet, result.apex);
+      if (result.apex >= 0) {
+        std::int32_t* block = derived(s);
+        derive_other_facets(facet, info_[s].sigma, result.apex, d_, block);
+        worker.predictor.found(facet, info_[s].sigma, block);
+      }
     }
     done_[s].store(k + 1, std::memory_order_release);
   }
@@ -558,6 +515,7 @@ class SearchPipeline {
   std::vector<std::int32_t> ids_;  // d per slot, written by the calling thread as facets enter
   std::vector<FacetInfo> info_;    // likewise
   std::vector<Result> results_;    // written by the thread that claimed the facet
+  std::vector<std::int32_t> derived_;  // likewise: derive_other_facets' block per slot, with an apex
   std::unique_ptr<std::atomic<bool>[]> closed_;         // set by the calling thread: closed since it entered
   std::unique_ptr<std::atomic<std::uint64_t>[]> done_;  // k + 1 once the result of facet k is in
   alignas(64) std::atomic<std::uint64_t> filled_{0};   // facets [0, filled) have entered the window
@@ -603,7 +561,7 @@ Triangulation delaunay(PointsView input, const Options& options) {
 
   phase = Clock::now();
   std::vector<std::int32_t>& simplices = result.simplices;
-  Frontier frontier(d, result, options.progress);
+  Frontier frontier(d, points.size, result, options.progress);
   frontier.open_first(first);
   SearchTotals totals;
   if (team.threads() == 1) {
