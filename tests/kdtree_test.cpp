@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "spatial/kdtree.hpp"
@@ -143,6 +144,48 @@ TEST(KdTree, TheOrderDoesNotDependOnTheLeafSize) {
       EXPECT_LT(coarse.nodes().size(), fine.nodes().size());
       for (const KdTree::Node& node : coarse.nodes())
         if (node.right < 0) EXPECT_LE(node.end - node.begin, leaf_size);
+    }
+  }
+}
+
+// build_and_reorder splits the build between threads (the two halves of the root, and so on
+// down): the tree must be the serial one, node for node. The inputs are large enough for
+// three levels of splits; the last one has thousands of copies of each of 9 points, whose
+// subtrees end in leaves of equal points.
+TEST(KdTree, TheTreeDoesNotDependOnTheThreadCount) {
+  Cloud copies{2, {}};
+  std::mt19937_64 rng(9);
+  for (int i = 0; i < 150000; ++i)
+    for (int k = 0; k < 2; ++k) copies.coords.push_back(static_cast<double>(rng() % 3));
+  for (const Cloud& cloud : {random_cloud(2, 300000, 4u), random_cloud(3, 200000, 5u), random_cloud(4, 150000, 6u),
+                             grid_cloud(2, 400), copies}) {
+    for (int leaf_size : {8, 32, 64}) {
+      std::vector<double> serial_coords = cloud.coords;
+      KdTree serial;
+      serial.build_and_reorder(serial_coords.data(), cloud.size(), cloud.dim, leaf_size, 1);
+      for (int threads : {2, 3, 4, 8}) {
+        SCOPED_TRACE("d=" + std::to_string(cloud.dim) + " n=" + std::to_string(cloud.size()) + " leaf size " +
+                     std::to_string(leaf_size) + " threads " + std::to_string(threads));
+        std::vector<double> coords = cloud.coords;
+        KdTree tree;
+        tree.build_and_reorder(coords.data(), cloud.size(), cloud.dim, leaf_size, threads);
+        EXPECT_EQ(coords, serial_coords);
+        EXPECT_EQ(tree.order(), serial.order());
+        ASSERT_EQ(tree.nodes().size(), serial.nodes().size());
+        for (std::int32_t i = 0; i < static_cast<std::int32_t>(tree.nodes().size()); ++i) {
+          const KdTree::Node& a = tree.nodes()[static_cast<std::size_t>(i)];
+          const KdTree::Node& b = serial.nodes()[static_cast<std::size_t>(i)];
+          ASSERT_TRUE(a.begin == b.begin && a.end == b.end && a.right == b.right && a.split_axis == b.split_axis &&
+                      a.split_value == b.split_value)
+              << "node " << i;
+          ASSERT_EQ(tree.parent(i), serial.parent(i)) << "node " << i;
+          for (int k = 0; k < cloud.dim; ++k) {
+            ASSERT_EQ(tree.lower(i)[k], serial.lower(i)[k]) << "node " << i;
+            ASSERT_EQ(tree.upper(i)[k], serial.upper(i)[k]) << "node " << i;
+          }
+        }
+        for (std::int32_t p = 0; p < cloud.size(); ++p) ASSERT_EQ(tree.leaf_of(p), serial.leaf_of(p)) << "point " << p;
+      }
     }
   }
 }

@@ -198,7 +198,7 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   });
   store.scaled = scale_by_power_of_two(by_rank, team);
   mark_dyadic(by_rank, store, team);
-  store.tree.build_and_reorder(by_rank.data(), store.size, d, leaf_size);
+  store.tree.build_and_reorder(by_rank.data(), store.size, d, leaf_size, team.threads());
   store.coords = std::move(by_rank);  // now in tree order
   const std::vector<std::int32_t>& order = store.tree.order();
   store.rank.resize(distinct.size());

@@ -2,6 +2,8 @@
 #include "spatial/kdtree.hpp"
 
 #include <algorithm>
+#include <future>
+#include <system_error>
 #include <numeric>
 #include <vector>
 
@@ -11,11 +13,11 @@ void KdTree::build(const double* coords, std::int32_t n, int dim, int leaf_size)
   build_any(coords, n, dim, leaf_size, nullptr);
 }
 
-void KdTree::build_and_reorder(double* coords, std::int32_t n, int dim, int leaf_size) {
-  build_any(coords, n, dim, leaf_size, coords);
+void KdTree::build_and_reorder(double* coords, std::int32_t n, int dim, int leaf_size, int threads) {
+  build_any(coords, n, dim, leaf_size, coords, threads);
 }
 
-void KdTree::build_any(const double* coords, std::int32_t n, int dim, int leaf_size, double* reordered) {
+void KdTree::build_any(const double* coords, std::int32_t n, int dim, int leaf_size, double* reordered, int threads) {
   dim_ = dim;
   order_.resize(static_cast<std::size_t>(n));
   std::iota(order_.begin(), order_.end(), 0);
@@ -23,15 +25,16 @@ void KdTree::build_any(const double* coords, std::int32_t n, int dim, int leaf_s
   boxes_.clear();
   parent_.clear();
   leaf_of_.assign(static_cast<std::size_t>(n), -1);
+  leaf_out_ = leaf_of_.data();
   const std::size_t expected_nodes = 2 * static_cast<std::size_t>(n / std::max(1, leaf_size) + 1);
   nodes_.reserve(expected_nodes);
   boxes_.reserve(expected_nodes * 2 * static_cast<std::size_t>(dim));
   parent_.reserve(expected_nodes);
   if (n == 0) return;
   switch (dim) {
-    case 2: build_fixed<2>(coords, n, std::max(1, leaf_size), reordered); return;
-    case 3: build_fixed<3>(coords, n, std::max(1, leaf_size), reordered); return;
-    case 4: build_fixed<4>(coords, n, std::max(1, leaf_size), reordered); return;
+    case 2: build_fixed<2>(coords, n, std::max(1, leaf_size), reordered, threads); return;
+    case 3: build_fixed<3>(coords, n, std::max(1, leaf_size), reordered, threads); return;
+    case 4: build_fixed<4>(coords, n, std::max(1, leaf_size), reordered, threads); return;
     default: break;
   }
   scratch_box_.assign(2 * static_cast<std::size_t>(dim), 0.0);
@@ -58,17 +61,35 @@ struct Item {
   double x[D];
   std::int32_t id;
 };
+
+// The tight box [lo, hi] of items[begin, end), and its widest axis.
+template <class Item>
+int box_of(const Item* items, std::int32_t begin, std::int32_t end, double* lo, double* hi) {
+  constexpr int kDim = static_cast<int>(sizeof(Item::x) / sizeof(double));
+  for (int k = 0; k < kDim; ++k) lo[k] = hi[k] = items[begin].x[k];
+  for (std::int32_t i = begin + 1; i < end; ++i)
+    for (int k = 0; k < kDim; ++k) {
+      lo[k] = std::min(lo[k], items[i].x[k]);
+      hi[k] = std::max(hi[k], items[i].x[k]);
+    }
+  int axis = 0;
+  for (int k = 1; k < kDim; ++k)
+    if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+  return axis;
+}
 }  // namespace
 
 template <int D>
-void KdTree::build_fixed(const double* coords, std::int32_t n, int leaf_size, double* reordered) {
+void KdTree::build_fixed(const double* coords, std::int32_t n, int leaf_size, double* reordered, int threads) {
   std::vector<Item<D>> items(static_cast<std::size_t>(n));
   for (std::int32_t i = 0; i < n; ++i) {
     Item<D>& item = items[static_cast<std::size_t>(i)];
     std::copy_n(coords + static_cast<std::size_t>(i) * D, D, item.x);
     item.id = i;
   }
-  build_items(items.data(), 0, n, leaf_size, -1, true);
+  int depth = 0;  // 2^depth >= threads
+  while ((1 << depth) < threads && depth < 6) ++depth;
+  build_items_parallel(items.data(), 0, n, leaf_size, depth);
   for (std::int32_t i = 0; i < n; ++i) {
     const Item<D>& item = items[static_cast<std::size_t>(i)];
     order_[static_cast<std::size_t>(i)] = item.id;
@@ -84,20 +105,12 @@ std::int32_t KdTree::build_items(Item* items, std::int32_t begin, std::int32_t e
   constexpr int kDim = static_cast<int>(sizeof(Item::x) / sizeof(double));
   const std::int32_t index = emit ? add_node(begin, end, parent) : -1;
   double lo[kDim], hi[kDim];
-  for (int k = 0; k < kDim; ++k) lo[k] = hi[k] = items[begin].x[k];
-  for (std::int32_t i = begin + 1; i < end; ++i)
-    for (int k = 0; k < kDim; ++k) {
-      lo[k] = std::min(lo[k], items[i].x[k]);
-      hi[k] = std::max(hi[k], items[i].x[k]);
-    }
-  int axis = 0;
-  for (int k = 1; k < kDim; ++k)
-    if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+  const int axis = box_of(items, begin, end, lo, hi);
   const bool leaf = end - begin <= leaf_size || hi[axis] == lo[axis];
   if (emit) {
     std::copy_n(lo, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim]);
     std::copy_n(hi, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim + kDim]);
-    if (leaf) std::fill(leaf_of_.begin() + begin, leaf_of_.begin() + end, index);
+    if (leaf) std::fill(leaf_out_ + begin, leaf_out_ + end, index);
   }
   if (end - begin <= std::min(leaf_size, kOrderLeafSize) || hi[axis] == lo[axis]) return index;
   const std::int32_t middle = begin + (end - begin) / 2;
@@ -112,6 +125,60 @@ std::int32_t KdTree::build_items(Item* items, std::int32_t begin, std::int32_t e
   const std::int32_t right = build_items(items, middle, end, leaf_size, index, children);
   if (children) nodes_[static_cast<std::size_t>(index)].right = right;
   return index;
+}
+
+template <class Item>
+void KdTree::build_items_parallel(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, int depth) {
+  constexpr int kDim = static_cast<int>(sizeof(Item::x) / sizeof(double));
+  // Below this many points a thread's start costs more than half the build saves.
+  constexpr std::int32_t kMinParallel = std::int32_t{1} << 15;
+  if (depth == 0 || end - begin < kMinParallel) {
+    build_items(items, begin, end, leaf_size, -1, true);
+    return;
+  }
+  // The root, as build_items makes it.
+  double lo[kDim], hi[kDim];
+  const int axis = box_of(items, begin, end, lo, hi);
+  if (end - begin <= leaf_size || hi[axis] == lo[axis]) {  // a leaf (all points equal): no split to share
+    build_items(items, begin, end, leaf_size, -1, true);
+    return;
+  }
+  const std::int32_t index = add_node(begin, end, -1);
+  std::copy_n(lo, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim]);
+  std::copy_n(hi, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim + kDim]);
+  const std::int32_t middle = begin + (end - begin) / 2;
+  std::nth_element(items + begin, items + middle, items + end,
+                   [axis](const Item& a, const Item& b) { return a.x[axis] < b.x[axis]; });
+  nodes_[static_cast<std::size_t>(index)].split_axis = axis;
+  nodes_[static_cast<std::size_t>(index)].split_value = items[middle].x[axis];
+  KdTree left, right;
+  for (KdTree* part : {&left, &right}) {
+    part->dim_ = dim_;
+    part->leaf_out_ = leaf_out_;
+  }
+  auto build_right = [&] { right.build_items_parallel(items, middle, end, leaf_size, depth - 1); };
+  std::future<void> done;
+  try {
+    done = std::async(std::launch::async, build_right);
+  } catch (const std::system_error&) {
+    build_right();  // no thread to be had: build it here
+  }
+  left.build_items_parallel(items, begin, middle, leaf_size, depth - 1);
+  if (done.valid()) done.get();  // rethrows the right half's exception
+  splice(left, index, begin, middle);
+  nodes_[static_cast<std::size_t>(index)].right = splice(right, index, middle, end);
+}
+
+std::int32_t KdTree::splice(const KdTree& part, std::int32_t parent, std::int32_t begin, std::int32_t end) {
+  const auto offset = static_cast<std::int32_t>(nodes_.size());
+  for (Node node : part.nodes_) {
+    if (node.right >= 0) node.right += offset;
+    nodes_.push_back(node);
+  }
+  for (const std::int32_t up : part.parent_) parent_.push_back(up < 0 ? parent : up + offset);
+  boxes_.insert(boxes_.end(), part.boxes_.begin(), part.boxes_.end());
+  for (std::int32_t i = begin; i < end; ++i) leaf_out_[i] += offset;
+  return offset;
 }
 
 std::int32_t KdTree::build_node(const double* coords, std::int32_t begin, std::int32_t end, int leaf_size,
@@ -131,7 +198,7 @@ std::int32_t KdTree::build_node(const double* coords, std::int32_t begin, std::i
   for (int k = 1; k < dim_; ++k)
     if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
   const bool leaf = end - begin <= leaf_size || hi[axis] == lo[axis];
-  if (emit && leaf) std::fill(leaf_of_.begin() + begin, leaf_of_.begin() + end, index);
+  if (emit && leaf) std::fill(leaf_out_ + begin, leaf_out_ + end, index);
   if (end - begin <= std::min(leaf_size, kOrderLeafSize) || hi[axis] == lo[axis]) return index;
 
   const std::int32_t middle = begin + (end - begin) / 2;

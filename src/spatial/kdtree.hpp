@@ -42,7 +42,7 @@ class KdTree {
   void build(const double* coords, std::int32_t n, int dim, int leaf_size = 8);
   // The same, then rewrites `coords` in tree order (row i becomes the point order()[i]), for a
   // caller that renumbers its points (saves it a copy).
-  void build_and_reorder(double* coords, std::int32_t n, int dim, int leaf_size = 8);
+  void build_and_reorder(double* coords, std::int32_t n, int dim, int leaf_size = 8, int threads = 1);
 
   const std::vector<std::int32_t>& order() const { return order_; }
   // The leaf that holds tree position `position` (a point id of the caller, after renumbering).
@@ -83,8 +83,16 @@ class KdTree {
                           bool emit);
   // The same construction over points copied next to their index (fixed d: no indirection).
   template <int D>
-  void build_fixed(const double* coords, std::int32_t n, int leaf_size, double* reordered);
-  void build_any(const double* coords, std::int32_t n, int dim, int leaf_size, double* reordered);
+  void build_fixed(const double* coords, std::int32_t n, int leaf_size, double* reordered, int threads);
+  void build_any(const double* coords, std::int32_t n, int dim, int leaf_size, double* reordered, int threads = 1);
+  // build_items over up to 2^depth threads: the root's split here, then each half built by a
+  // part (a KdTree numbering its own nodes from 0) on a thread of its own, and spliced back in
+  // preorder. Every nth_element sees the same range as in the serial build: the same tree.
+  template <class Item>
+  void build_items_parallel(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, int depth);
+  // Appends `part` (a subtree whose root's parent is `parent`) after the nodes so far; returns
+  // the index of its root. Its points are [begin, end).
+  std::int32_t splice(const KdTree& part, std::int32_t parent, std::int32_t begin, std::int32_t end);
   template <class Item>
   std::int32_t build_items(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent,
                            bool emit);
@@ -121,6 +129,9 @@ class KdTree {
   std::vector<double> boxes_;
   std::vector<std::int32_t> parent_;   // per node; -1 for the root
   std::vector<std::int32_t> leaf_of_;  // per tree position
+  // Where the build writes each point's leaf: leaf_of_, or the whole tree's array for a part
+  // built in parallel (parts write disjoint ranges, in their own numbering, fixed by splice).
+  std::int32_t* leaf_out_ = nullptr;
   std::vector<double> scratch_box_;    // build_node's box when it only orders points
 };
 
