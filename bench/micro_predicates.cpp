@@ -158,7 +158,8 @@ void BM_FacetSearch(benchmark::State& state) {
   const drange::Triangulation tri = drange::delaunay(cloud);
   std::vector<drange::Duplicate> duplicates;
   drange::engine::Team team(1);
-  const drange::engine::PointStore store = drange::engine::prepare_points(cloud, 8, duplicates, team);
+  const drange::engine::PointStore store =
+      drange::engine::prepare_points(cloud, drange::engine::search_leaf_size(d), duplicates, team);  // as the engine
   std::vector<std::int32_t> id_of(n);
   for (std::int32_t id = 0; id < store.size; ++id) id_of[static_cast<std::size_t>(store.input_index[static_cast<std::size_t>(id)])] = id;
 
