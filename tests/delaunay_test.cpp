@@ -94,13 +94,11 @@ std::vector<Simplex> perturbed_oracle(const PointCloud& points) {
   return out;
 }
 
+// The integer grid {0..k-1}^d.
 PointCloud grid(int d, int k) {
-  PointCloud g{d, {}};
-  int total = 1;
-  for (int i = 0; i < d; ++i) total *= k;
-  for (int t = 0; t < total; ++t)
-    for (int i = 0, r = t; i < d; ++i, r /= k) g.coords.push_back(r % k);
-  return g;
+  std::size_t total = 1;
+  for (int i = 0; i < d; ++i) total *= static_cast<std::size_t>(k);
+  return drange::generate_points(Distribution::Grid, total, d, 1);
 }
 
 void expect_valid(const PointCloud& points, const Triangulation& t, const std::string& what) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "drange/generate.hpp"
 #include "spatial/kdtree.hpp"
 
 namespace {
@@ -29,13 +30,11 @@ Cloud random_cloud(int dim, int n, unsigned seed) {
   return c;
 }
 
+// The integer grid {0..side-1}^dim.
 Cloud grid_cloud(int dim, int side) {
-  Cloud c{dim, {}};
-  int total = 1;
-  for (int k = 0; k < dim; ++k) total *= side;
-  for (int t = 0; t < total; ++t)
-    for (int k = 0, r = t; k < dim; ++k, r /= side) c.coords.push_back(r % side);
-  return c;
+  std::size_t total = 1;
+  for (int k = 0; k < dim; ++k) total *= static_cast<std::size_t>(side);
+  return Cloud{dim, drange::generate_points(drange::Distribution::Grid, total, dim, 1).coords};
 }
 
 // Reports every point of the visited leaves that lies in the box. With `shrink`, the box
