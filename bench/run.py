@@ -50,7 +50,8 @@ DRANGE_ONLY = {("uniform", 216000, 3)}
 # The d = 7 target of issue 4: a size where the peers take over 10 minutes (`--beyond`, with a
 # 600 s limit). Chosen from the standard set's 7D rows: CGAL dD static took 39.8 s at 1 000
 # points and about 172 s at 2 000 (the issue's figure; over 90 s here), so about n^2.1, which
-# gives some 15 minutes at 4 500; Qhull took 67 s at 1 000 and over 300 s at 2 000.
+# gives some 15 minutes at 4 500; Qhull took 67 s at 1 000 and over 300 s at 2 000. drange
+# took 258 s there (one thread, 22.3M simplices, 2.3 GiB; one run on a shared machine).
 BEYOND = [("uniform", 4500, 7)]
 QUICK = [("uniform", 100000, 2), ("grid", 90000, 2), ("uniform", 100000, 3), ("uniform", 10000, 4), ("uniform", 3000, 5)]
 # Ablation: (distribution, n, d, variants).
