@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <iterator>
 #include <limits>
 
@@ -25,6 +26,96 @@ inline std::uint32_t bit(int j) { return std::uint32_t{1} << j; }
 // d <= 11 (prepare_points.cpp): rows of d + 1 entries, d + 2 ranks.
 constexpr int kMaxRow = 12;
 
+// The points of each kd-tree leaf in blocks of at most kLanes consecutive ids, cut the way
+// the build orders a leaf's points (halving its range down to KdTree::kOrderLeafSize: each
+// block is a subtree of that order, near points). A leaf's blocks come in groups of kLanes
+// (a leaf of up to kLanes^2 points has one group), each group with the bounding boxes of its
+// blocks transposed (lower k of its j-th block at k * kLanes + j, then the upper bounds; an
+// empty slot's box is at +infinity), each block with its points' coordinates transposed
+// likewise (+infinity past its points). The leaf scan then tests the ball against a group's
+// boxes together and, in the blocks that meet the ball, the distances of the block's points
+// together: straight-line loops over kLanes doubles (vector instructions). A copy of the
+// coordinates, O(n d) doubles, built once per search object.
+//
+// From d = 4 on (kMinBlockDimension). Below, the balls are small against a leaf, the scan of a
+// leaf is short already and building the blocks costs more than they save (2D 1M points,
+// time_search 0.87 -> 1.02 s; 3D 200k 1.39 -> 1.47 s).
+constexpr int kMinBlockDimension = 4;
+class LeafBlocks {
+ public:
+  static constexpr int kLanes = spatial::KdTree::kOrderLeafSize;
+
+  LeafBlocks() = default;
+  LeafBlocks(const PointStore& points, bool enabled) {
+    if (!enabled || points.size == 0) return;
+    d_ = points.dim;
+    const auto& nodes = points.tree.nodes();
+    first_.assign(nodes.size(), {-1, 0});
+    std::vector<std::int32_t> cuts;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      if (nodes[i].right >= 0) continue;
+      cuts.clear();
+      cut(nodes[i].begin, nodes[i].end, cuts);
+      cuts.push_back(nodes[i].end);
+      const auto blocks = static_cast<std::int32_t>(cuts.size() - 1);
+      const std::int32_t groups = (blocks + kLanes - 1) / kLanes;
+      first_[i] = {static_cast<std::int32_t>(begin_.size() / kLanes), groups};
+      for (std::int32_t slot = 0; slot < groups * kLanes; ++slot) {
+        begin_.push_back(slot < blocks ? cuts[static_cast<std::size_t>(slot)] : 0);
+        count_.push_back(slot < blocks ? cuts[static_cast<std::size_t>(slot) + 1] - cuts[static_cast<std::size_t>(slot)] : 0);
+      }
+    }
+    const std::size_t slots = begin_.size();
+    boxes_.assign(slots / kLanes * group_size(), kInfinity);
+    lanes_.assign(slots * block_size(), kInfinity);
+    for (std::size_t block = 0; block < slots; ++block) {
+      double* lo = &boxes_[block / kLanes * group_size() + block % kLanes];
+      double* hi = lo + static_cast<std::size_t>(d_) * kLanes;
+      double* lanes = &lanes_[block * block_size()];
+      for (std::int32_t j = 0; j < count_[block]; ++j) {
+        const double* x = points.point(begin_[block] + j);
+        for (int k = 0; k < d_; ++k) {
+          const std::size_t at = static_cast<std::size_t>(k) * kLanes;
+          lo[at] = j == 0 ? x[k] : std::min(lo[at], x[k]);
+          hi[at] = j == 0 ? x[k] : std::max(hi[at], x[k]);
+          lanes[at + static_cast<std::size_t>(j)] = x[k];
+        }
+      }
+    }
+  }
+  bool enabled() const { return !begin_.empty(); }
+  // A leaf's groups: the first one's index and their number.
+  struct Groups {
+    std::int32_t first, count;
+  };
+  Groups groups(std::int32_t leaf) const { return first_[static_cast<std::size_t>(leaf)]; }
+  const double* boxes(std::int32_t group) const { return &boxes_[static_cast<std::size_t>(group) * group_size()]; }
+  // Block `slot` of `group`: its first point, its point count (0: an empty slot), its points.
+  std::int32_t begin(std::int32_t group, int slot) const { return begin_[index(group, slot)]; }
+  std::int32_t count(std::int32_t group, int slot) const { return count_[index(group, slot)]; }
+  const double* lanes(std::int32_t group, int slot) const { return &lanes_[index(group, slot) * block_size()]; }
+
+ private:
+  static std::size_t index(std::int32_t group, int slot) { return static_cast<std::size_t>(group) * kLanes + static_cast<std::size_t>(slot); }
+  std::size_t group_size() const { return 2 * static_cast<std::size_t>(d_) * kLanes; }
+  std::size_t block_size() const { return static_cast<std::size_t>(d_) * kLanes; }
+  static void cut(std::int32_t begin, std::int32_t end, std::vector<std::int32_t>& cuts) {
+    if (end - begin <= kLanes) {
+      cuts.push_back(begin);
+      return;
+    }
+    const std::int32_t middle = begin + (end - begin) / 2;  // as KdTree's build
+    cut(begin, middle, cuts);
+    cut(middle, end, cuts);
+  }
+  int d_ = 0;
+  std::vector<Groups> first_;         // per tree node (leaves only)
+  std::vector<std::int32_t> begin_;   // per block slot
+  std::vector<std::int32_t> count_;   // per block slot
+  std::vector<double> boxes_;         // per group
+  std::vector<double> lanes_;         // per block slot
+};
+
 template <int D>
 class SearchKernel final : public FacetSearch::Kernel {
  public:
@@ -39,15 +130,11 @@ class SearchKernel final : public FacetSearch::Kernel {
     return options_.visit_facet_child_first && centroid_[static_cast<std::size_t>(node.split_axis)] > node.split_value;
   }
   void leaf(std::int32_t begin, std::int32_t end) {
-    for (std::int32_t id = begin; id < end; ++id) {
-      if (ball_) {  // the usual case: skip to the leaf's next point in the ball
-        id = first_in_ball(id, end);
-        if (id == end) return;
-        test(id);
-      } else if (in_query(points_.point(id))) {
-        test(id);
-      }
+    if (ball_ && blocks_.enabled()) {
+      scan_blocks(begin, end);
+      return;
     }
+    scan_points(begin, end);
   }
 
  private:
@@ -88,6 +175,27 @@ class SearchKernel final : public FacetSearch::Kernel {
     }
     return end;
   }
+  // The leaf's points one by one: the ball test (first_in_ball), or the box test while there is
+  // no ball.
+  void scan_points(std::int32_t begin, std::int32_t end) {
+    for (std::int32_t id = begin; id < end; ++id) {
+      if (ball_) {  // the usual case: skip to the leaf's next point in the ball
+        id = first_in_ball(id, end);
+        if (id == end) return;
+        test(id);
+      } else if (in_query(points_.point(id))) {
+        test(id);
+      }
+    }
+  }
+  // The leaf's points block by block (LeafBlocks): a block whose box misses the ball is
+  // skipped; in the others, the squared distances of all the block's points are computed at
+  // once (in_query's arithmetic, lane by lane: the same points pass).
+  void scan_blocks(std::int32_t begin, std::int32_t end);
+  // The squared distances to the ball's centre of a block's points (transposed coordinates),
+  // and lower bounds of those of the points in a group's boxes.
+  void point_distances(const double* lanes, double* distance2) const;
+  void box_distances(const double* boxes, double* distance2) const;
   void consider(std::int32_t id) {
     if (in_query(points_.point(id))) test(id);
   }
@@ -141,6 +249,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   std::array<double, kMaxRow> row_{};
   SearchCounters* counters_ = nullptr;
   SeedMemory& seeds_;  // SearchOptions::seed_candidate
+  LeafBlocks blocks_;
 };
 
 template <int D>
@@ -152,7 +261,8 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       lifted_gamma_(geometry::gamma_bound(
           geometry::laplace_roundings(points.dim + 1, geometry::lifted_entry_roundings(points.dim)))),
       minors_(points.dim + 1),
-      seeds_(seeds) {
+      seeds_(seeds),
+      blocks_(points, options.use_kdtree && points.dim >= kMinBlockDimension) {
   if (points_.dyadic) {
     for (int size = 0; size <= d_; ++size)
       exact_limits_[static_cast<std::size_t>(size)] = std::ldexp(1.0, 52 + points_.unit_exponent * size);
@@ -352,6 +462,95 @@ void SearchKernel<D>::test(std::int32_t id) {
   row_[static_cast<std::size_t>(d)] = lift;
   if (!on_open_side(id)) return;
   if (candidate_ < 0 || beats_candidate(id)) set_candidate(id);
+}
+
+template <int D>
+void SearchKernel<D>::scan_blocks(std::int32_t begin, std::int32_t end) {
+  constexpr int kLanes = LeafBlocks::kLanes;
+  const LeafBlocks::Groups groups = blocks_.groups(points_.tree.leaf_of(begin));
+  for (std::int32_t group = groups.first; group < groups.first + groups.count; ++group) {
+    double box_distance2[kLanes];
+    box_distances(blocks_.boxes(group), box_distance2);
+    double reach2 = ball_reach2_;
+    for (int slot = 0; slot < kLanes; ++slot) {
+      if (box_distance2[slot] > reach2) continue;  // also the empty slots (infinity)
+      const std::int32_t from = blocks_.begin(group, slot);
+      const std::int32_t count = blocks_.count(group, slot);
+      const double* lanes = blocks_.lanes(group, slot);
+      double distance2[kLanes];
+      point_distances(lanes, distance2);
+      for (int j = 0; j < count; ++j) {
+        if (distance2[j] > reach2) continue;
+        const std::int32_t candidate = candidate_;
+        test(from + j);
+        if (!ball_) {  // test() lost the ball: the rest of the leaf by the box
+          scan_points(from + j + 1, end);
+          return;
+        }
+        if (candidate_ != candidate) {  // a new ball
+          point_distances(lanes, distance2);
+          box_distances(blocks_.boxes(group), box_distance2);
+          reach2 = ball_reach2_;
+        }
+      }
+    }
+  }
+}
+
+// Two doubles as one value (GCC and Clang vector extensions: an SSE2 register on x86-64, a
+// NEON one on AArch64); a block's kLanes lanes are kPairs of them. Unaligned loads.
+using Pair = double __attribute__((vector_size(2 * sizeof(double))));
+constexpr int kPairs = LeafBlocks::kLanes / 2;
+inline Pair load_pair(const double* x) {
+  Pair v;
+  std::memcpy(&v, x, sizeof v);
+  return v;
+}
+
+template <int D>
+void SearchKernel<D>::point_distances(const double* lanes, double* distance2) const {
+  // first_in_ball's arithmetic, lane by lane: the same points pass.
+  const int d = dim();
+  constexpr int kLanes = LeafBlocks::kLanes;
+  Pair sum[kPairs];
+  const Pair c0 = {centre_[0], centre_[0]};
+  for (int i = 0; i < kPairs; ++i) {
+    const Pair delta = load_pair(lanes + 2 * i) - c0;
+    sum[i] = delta * delta;
+  }
+  for (int k = 1; k < d; ++k) {
+    const Pair c = {centre_[static_cast<std::size_t>(k)], centre_[static_cast<std::size_t>(k)]};
+    const double* x = lanes + k * kLanes;
+    for (int i = 0; i < kPairs; ++i) {
+      const Pair delta = load_pair(x + 2 * i) - c;
+      sum[i] += delta * delta;
+    }
+  }
+  std::memcpy(distance2, sum, sizeof sum);
+}
+
+template <int D>
+void SearchKernel<D>::box_distances(const double* boxes, double* distance2) const {
+  // prune's arithmetic, lane by lane: a lower bound of the computed distance of every point
+  // in the box (rounding is monotonic).
+  const int d = dim();
+  constexpr int kLanes = LeafBlocks::kLanes;
+  const Pair zero = {0.0, 0.0};
+  Pair sum[kPairs];
+  for (int i = 0; i < kPairs; ++i) sum[i] = zero;
+  for (int k = 0; k < d; ++k) {
+    const Pair c = {centre_[static_cast<std::size_t>(k)], centre_[static_cast<std::size_t>(k)]};
+    const double* lo = boxes + k * kLanes;
+    const double* hi = boxes + (d + k) * kLanes;
+    for (int i = 0; i < kPairs; ++i) {
+      const Pair below = load_pair(lo + 2 * i) - c;
+      const Pair above = c - load_pair(hi + 2 * i);
+      Pair delta = below > above ? below : above;
+      delta = delta > zero ? delta : zero;
+      sum[i] += delta * delta;
+    }
+  }
+  std::memcpy(distance2, sum, sizeof sum);
 }
 
 template <int D>
