@@ -116,6 +116,16 @@ class LeafBlocks {
   std::vector<double> lanes_;         // per block slot
 };
 
+// Two doubles as one value (GCC and Clang vector extensions: an SSE2 register on x86-64, a
+// NEON one on AArch64); a block's kLanes lanes are kPairs of them. Unaligned loads.
+using Pair = double __attribute__((vector_size(2 * sizeof(double))));
+constexpr int kPairs = LeafBlocks::kLanes / 2;
+inline Pair load_pair(const double* x) {
+  Pair v;
+  std::memcpy(&v, x, sizeof v);
+  return v;
+}
+
 template <int D>
 class SearchKernel final : public FacetSearch::Kernel {
  public:
@@ -497,16 +507,6 @@ void SearchKernel<D>::scan_blocks(std::int32_t begin, std::int32_t end) {
   }
 }
 
-// Two doubles as one value (GCC and Clang vector extensions: an SSE2 register on x86-64, a
-// NEON one on AArch64); a block's kLanes lanes are kPairs of them. Unaligned loads.
-using Pair = double __attribute__((vector_size(2 * sizeof(double))));
-constexpr int kPairs = LeafBlocks::kLanes / 2;
-inline Pair load_pair(const double* x) {
-  Pair v;
-  std::memcpy(&v, x, sizeof v);
-  return v;
-}
-
 template <int D>
 void SearchKernel<D>::point_distances(const double* lanes, double* distance2) const {
   // first_in_ball's arithmetic, lane by lane: the same points pass.
@@ -559,12 +559,26 @@ bool SearchKernel<D>::prune(std::int32_t node) const {
   const double* lo = points_.tree.template lower<D>(node);
   const double* hi = points_.tree.template upper<D>(node);
   if (ball_) {  // the node's box misses the ball (the walk only checked the ball's bounding box)
-    double distance2 = 0.0;
-    for (int k = 0; k < d; ++k) {
+    // The distance on each axis two axes at a time (vector selects: a branch per axis was
+    // mispredicted), the sum in axis order as before.
+    std::array<double, kMaxRow> squares{};
+    const Pair zero = {0.0, 0.0};
+    int k = 0;
+    for (; k + 1 < d; k += 2) {
+      const Pair c = load_pair(&centre_[static_cast<std::size_t>(k)]);
+      const Pair below = load_pair(lo + k) - c, above = c - load_pair(hi + k);
+      Pair delta = below > above ? below : above;
+      delta = delta > zero ? delta : zero;
+      const Pair square = delta * delta;
+      std::memcpy(&squares[static_cast<std::size_t>(k)], &square, sizeof square);
+    }
+    if (k < d) {
       const double c = centre_[static_cast<std::size_t>(k)];
       const double delta = std::max(0.0, std::max(lo[k] - c, c - hi[k]));
-      distance2 += delta * delta;
+      squares[static_cast<std::size_t>(k)] = delta * delta;
     }
+    double distance2 = squares[0];
+    for (k = 1; k < d; ++k) distance2 += squares[static_cast<std::size_t>(k)];
     if (distance2 > ball_reach2_) return true;
   }
   // Within the candidate's ball, the closed side is a thin cap of its sphere, inside the empty
