@@ -140,9 +140,15 @@ class SearchKernel final : public FacetSearch::Kernel {
     return options_.visit_facet_child_first && centroid_[static_cast<std::size_t>(node.split_axis)] > node.split_value;
   }
   void leaf(std::int32_t begin, std::int32_t end) {
-    if (ball_ && blocks_.enabled()) {
-      scan_blocks(begin, end);
-      return;
+    if (blocks_.enabled()) {
+      if (ball_) {
+        scan_blocks(begin, end);
+        return;
+      }
+      if (candidate_ < 0) {  // no candidate yet: every point of the leaf is in the query box
+        scan_blocks_for_open_side(begin, end);
+        return;
+      }
     }
     scan_points(begin, end);
   }
@@ -202,6 +208,16 @@ class SearchKernel final : public FacetSearch::Kernel {
   // skipped; in the others, the squared distances of all the block's points are computed at
   // once (in_query's arithmetic, lane by lane: the same points pass).
   void scan_blocks(std::int32_t begin, std::int32_t end);
+  // Before the first candidate, when the query box is all space: every point of the leaf is
+  // tested, in order, up to the first on the open side, except those that on_open_side's
+  // filter puts on the closed side, which are found block by block with its arithmetic lane
+  // by lane (most of a leaf lies on the closed side of a facet, and in high d most searches
+  // reach the walk without a candidate on the open side: 6D 1k points, 39 points tested per
+  // facet, nearly all on the closed side).
+  void scan_blocks_for_open_side(std::int32_t begin, std::int32_t end);
+  // The lanes of a block (its first `count`) that on_open_side's filter does not certify on
+  // the closed side.
+  unsigned maybe_open_side(const double* lanes, int count) const;
   // The squared distances to the ball's centre of a block's points (transposed coordinates),
   // and lower bounds of those of the points in a group's boxes.
   void point_distances(const double* lanes, double* distance2) const;
@@ -505,6 +521,60 @@ void SearchKernel<D>::scan_blocks(std::int32_t begin, std::int32_t end) {
       }
     }
   }
+}
+
+template <int D>
+void SearchKernel<D>::scan_blocks_for_open_side(std::int32_t begin, std::int32_t end) {
+  constexpr int kLanes = LeafBlocks::kLanes;
+  const LeafBlocks::Groups groups = blocks_.groups(points_.tree.leaf_of(begin));
+  for (std::int32_t group = groups.first; group < groups.first + groups.count; ++group) {
+    for (int slot = 0; slot < kLanes; ++slot) {
+      const std::int32_t count = blocks_.count(group, slot);
+      if (count == 0) continue;
+      const std::int32_t from = blocks_.begin(group, slot);
+      for (unsigned open = maybe_open_side(blocks_.lanes(group, slot), count); open != 0; open &= open - 1) {
+        const int j = __builtin_ctz(open);
+        test(from + j);
+        if (candidate_ >= 0) {  // the first candidate: the rest of the leaf in its ball (or box)
+          scan_points(from + j + 1, end);
+          return;
+        }
+      }
+    }
+  }
+}
+
+template <int D>
+unsigned SearchKernel<D>::maybe_open_side(const double* lanes, int count) const {
+  const unsigned all = (1u << count) - 1;
+  if (!facet_clean_) return all;  // on_open_side certifies nothing
+  // on_open_side's sums o = a . (x - f0) and o_abs = |a| . |x - f0|, in axis order, and
+  // certified_sign_with's test for -1.
+  const int d = dim();
+  constexpr int kLanes = LeafBlocks::kLanes;
+  const Pair zero = {0.0, 0.0};
+  Pair o[kPairs], o_abs[kPairs];
+  for (int i = 0; i < kPairs; ++i) o[i] = o_abs[i] = zero;
+  for (int k = 0; k < d; ++k) {
+    const Pair f = {f0_[k], f0_[k]};
+    const Pair a = {a_[static_cast<std::size_t>(k)], a_[static_cast<std::size_t>(k)]};
+    const Pair a_abs = {a_abs_[static_cast<std::size_t>(k)], a_abs_[static_cast<std::size_t>(k)]};
+    const double* x = lanes + k * kLanes;
+    for (int i = 0; i < kPairs; ++i) {
+      const Pair row = load_pair(x + 2 * i) - f;
+      o[i] += a * row;
+      o_abs[i] += a_abs * (row < zero ? -row : row);
+    }
+  }
+  const Pair gamma = {orient_gamma_, orient_gamma_};
+  const Pair low = {geometry::kFilterUnderflow, geometry::kFilterUnderflow};
+  const Pair high = {geometry::kFilterOverflow, geometry::kFilterOverflow};
+  unsigned closed = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    const auto certified = (o_abs[i] > low) & (o_abs[i] < high) & (o[i] < -(gamma * o_abs[i]));
+    closed |= static_cast<unsigned>((certified[0] & 1) | (certified[1] & 2)) << (2 * i);
+  }
+  return ~closed & all;
 }
 
 template <int D>
