@@ -218,6 +218,9 @@ class SearchKernel final : public FacetSearch::Kernel {
   // The lanes of a block (its first `count`) that on_open_side's filter does not certify on
   // the closed side.
   unsigned maybe_open_side(const double* lanes, int count) const;
+  // The blocks of a group whose box prune's closed-side filter does not certify wholly on the
+  // closed side.
+  unsigned boxes_maybe_open_side(const double* boxes) const;
   // The squared distances to the ball's centre of a block's points (transposed coordinates),
   // and lower bounds of those of the points in a group's boxes.
   void point_distances(const double* lanes, double* distance2) const;
@@ -528,9 +531,10 @@ void SearchKernel<D>::scan_blocks_for_open_side(std::int32_t begin, std::int32_t
   constexpr int kLanes = LeafBlocks::kLanes;
   const LeafBlocks::Groups groups = blocks_.groups(points_.tree.leaf_of(begin));
   for (std::int32_t group = groups.first; group < groups.first + groups.count; ++group) {
+    const unsigned blocks = boxes_maybe_open_side(blocks_.boxes(group));
     for (int slot = 0; slot < kLanes; ++slot) {
       const std::int32_t count = blocks_.count(group, slot);
-      if (count == 0) continue;
+      if (count == 0 || !(blocks >> slot & 1)) continue;
       const std::int32_t from = blocks_.begin(group, slot);
       for (unsigned open = maybe_open_side(blocks_.lanes(group, slot), count); open != 0; open &= open - 1) {
         const int j = __builtin_ctz(open);
@@ -542,6 +546,42 @@ void SearchKernel<D>::scan_blocks_for_open_side(std::int32_t begin, std::int32_t
       }
     }
   }
+}
+
+template <int D>
+unsigned SearchKernel<D>::boxes_maybe_open_side(const double* boxes) const {
+  constexpr unsigned kAll = (1u << LeafBlocks::kLanes) - 1;
+  if (!facet_clean_) return kAll;
+  // prune's sums: the largest sigma O over the box, at the corner that maximises each term,
+  // and its absolute tree; certified_sign_with's test for -1.
+  const int d = dim();
+  constexpr int kLanes = LeafBlocks::kLanes;
+  const Pair zero = {0.0, 0.0};
+  Pair m[kPairs], m_abs[kPairs];
+  for (int i = 0; i < kPairs; ++i) m[i] = m_abs[i] = zero;
+  for (int k = 0; k < d; ++k) {
+    const double a = a_[static_cast<std::size_t>(k)];
+    const Pair f = {f0_[k], f0_[k]};
+    const Pair av = {a, a};
+    const Pair a_abs = {a_abs_[static_cast<std::size_t>(k)], a_abs_[static_cast<std::size_t>(k)]};
+    const double* lo = boxes + k * kLanes;
+    const double* hi = boxes + (d + k) * kLanes;
+    for (int i = 0; i < kPairs; ++i) {
+      const Pair dlo = load_pair(lo + 2 * i) - f, dhi = load_pair(hi + 2 * i) - f;
+      m[i] += av * (a >= 0 ? dhi : dlo);
+      const Pair abs_lo = dlo < zero ? -dlo : dlo, abs_hi = dhi < zero ? -dhi : dhi;
+      m_abs[i] += a_abs * (abs_lo > abs_hi ? abs_lo : abs_hi);
+    }
+  }
+  const Pair gamma = {orient_gamma_, orient_gamma_};
+  const Pair low = {geometry::kFilterUnderflow, geometry::kFilterUnderflow};
+  const Pair high = {geometry::kFilterOverflow, geometry::kFilterOverflow};
+  unsigned closed = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    const auto certified = (m_abs[i] > low) & (m_abs[i] < high) & (m[i] < -(gamma * m_abs[i]));
+    closed |= static_cast<unsigned>((certified[0] & 1) | (certified[1] & 2)) << (2 * i);
+  }
+  return ~closed & kAll;
 }
 
 template <int D>
