@@ -88,4 +88,62 @@ TEST(FacetSearch, FixedDimensionKernelsMatchTheAnyDimensionKernelOnIntegerPoints
                            "integers in [0, 2] d=" + std::to_string(d) + " seed=" + std::to_string(seed));
 }
 
+// The kd-tree search (both kernels, every variant that uses the tree) against the scan of
+// every point, for both sides of every facet of (up to 100 of) the simplices, with the tree
+// built for `leaf_size`: leaves larger than LeafBlocks' blocks (8 points), and larger than
+// one group of blocks (64 points) when leaf_size is, so that the block scan skips blocks and
+// groups by their boxes.
+void expect_tree_search_matches_scan(const PointCloud& points, int leaf_size, const std::string& what) {
+  const drange::Triangulation t = drange::delaunay(points);
+  const int d = points.dim;
+  drange::engine::Team team(1);
+  std::vector<drange::Duplicate> duplicates;
+  const drange::engine::PointStore store = drange::engine::prepare_points(points, leaf_size, duplicates, team);
+  std::vector<std::int32_t> id_of(points.size(), -1);
+  for (std::int32_t id = 0; id < store.size; ++id) id_of[static_cast<std::size_t>(store.input_index[static_cast<std::size_t>(id)])] = id;
+  FacetSearch scan(store, drange::search_variant("scan"), FacetSearch::KernelChoice::AnyDimension);
+  const std::size_t stride = std::max<std::size_t>(1, t.size() / 100);
+  for (const char* variant : {"full", "no-seed", "no-bottom-up", "no-prune"}) {
+    const drange::SearchOptions options = drange::search_variant(variant);
+    FacetSearch fixed(store, options, FacetSearch::KernelChoice::FixedDimension);
+    FacetSearch any(store, options, FacetSearch::KernelChoice::AnyDimension);
+    drange::engine::SearchCounters counters;
+    for (std::size_t s = 0; s < t.size(); s += stride) {
+      const std::int32_t* simplex = &t.simplices[s * static_cast<std::size_t>(d + 1)];
+      for (int opposite = 0; opposite <= d; ++opposite) {
+        std::vector<std::int32_t> facet;
+        for (int i = 0; i <= d; ++i)
+          if (i != opposite) facet.push_back(id_of[static_cast<std::size_t>(simplex[i])]);
+        std::sort(facet.begin(), facet.end());
+        for (int sigma : {1, -1}) {
+          const std::int32_t expected = scan.find_apex(facet.data(), sigma, counters);
+          ASSERT_EQ(fixed.find_apex(facet.data(), sigma, counters), expected)
+              << what << " leaf size " << leaf_size << " variant " << variant << " simplex " << s << " facet " << opposite
+              << " side " << sigma;
+          ASSERT_EQ(any.find_apex(facet.data(), sigma, counters), expected)
+              << what << " leaf size " << leaf_size << " variant " << variant << " simplex " << s << " facet " << opposite
+              << " side " << sigma << " (any d)";
+        }
+      }
+    }
+  }
+}
+
+TEST(FacetSearch, TreeSearchFindsTheScansPointWithSmallAndLargeLeaves) {
+  const std::array<std::size_t, 9> sizes = {0, 0, 600, 400, 300, 200, 120, 90, 80};
+  for (int d = 2; d <= 8; ++d) {
+    const PointCloud points = drange::generate_points(drange::Distribution::Uniform, sizes[static_cast<std::size_t>(d)], d, 7);
+    for (int leaf_size : {drange::engine::search_leaf_size(d), 13, 200})
+      expect_tree_search_matches_scan(points, leaf_size, "uniform d=" + std::to_string(d));
+  }
+  for (int d = 2; d <= 4; ++d) {  // grids: cospherical points, ties broken by the perturbation
+    const std::size_t side = d == 2 ? 12 : d == 3 ? 5 : 3;
+    std::size_t n = 1;
+    for (int k = 0; k < d; ++k) n *= side;
+    const PointCloud points = drange::generate_points(drange::Distribution::Grid, n, d, 1);
+    for (int leaf_size : {drange::engine::search_leaf_size(d), 200})
+      expect_tree_search_matches_scan(points, leaf_size, "grid d=" + std::to_string(d));
+  }
+}
+
 }  // namespace

@@ -5,9 +5,21 @@
 
 namespace drange::geometry {
 
-SubsetTable::SubsetTable(int columns) : columns_(columns), by_size_(static_cast<std::size_t>(columns) + 1) {
+SubsetTable::SubsetTable(int columns)
+    : columns_(columns), by_size_(static_cast<std::size_t>(columns) + 1), terms_(static_cast<std::size_t>(columns) + 1) {
   for (std::uint32_t mask = 0; mask < (std::uint32_t{1} << columns); ++mask)
     by_size_[static_cast<std::size_t>(__builtin_popcount(mask))].push_back(mask);
+  for (int size = 1; size <= columns; ++size) {
+    for (std::uint32_t mask : by_size_[static_cast<std::size_t>(size)]) {
+      int position = 0;
+      for (std::uint32_t rest = mask; rest; rest &= rest - 1, ++position) {
+        const int j = __builtin_ctz(rest);
+        terms_[static_cast<std::size_t>(size)].push_back(Term{static_cast<std::uint16_t>(mask & ~(std::uint32_t{1} << j)),
+                                                              static_cast<std::uint8_t>(j),
+                                                              static_cast<std::uint8_t>((size - 1 + position) & 1)});
+      }
+    }
+  }
 }
 
 const SubsetTable& SubsetTable::get(int columns) {

@@ -22,6 +22,15 @@ class SubsetTable {
   explicit SubsetTable(int columns);
   int columns() const { return columns_; }
   const std::vector<std::uint32_t>& of_size(int r) const { return by_size_[static_cast<std::size_t>(r)]; }
+  // The Laplace expansion of each subset of size r along its last row, flattened: for the
+  // subsets of of_size(r) in that order, r terms each, one per member column in increasing
+  // order, with the subset less that column and the cofactor's sign (-1)^(r - 1 + position).
+  struct Term {
+    std::uint16_t sub;
+    std::uint8_t column;
+    std::uint8_t negative;
+  };
+  const std::vector<Term>& terms_of_size(int r) const { return terms_[static_cast<std::size_t>(r)]; }
 
   // The shared table for n columns (n <= kMaxColumns), built once.
   static const SubsetTable& get(int columns);
@@ -30,6 +39,7 @@ class SubsetTable {
  private:
   int columns_;
   std::vector<std::vector<std::uint32_t>> by_size_;
+  std::vector<std::vector<Term>> terms_;
 };
 
 // Up to kInlineColumns columns the minors live in the object itself (no allocation: the
@@ -57,16 +67,19 @@ class MinorTable {
 
   // Sets row `r` (0-based; rows 0..r-1 must be set): computes every minor of r+1 columns.
   void set_row(int r, const double* row) {
+    // The terms in a flat table (SubsetTable::terms_of_size): the same products, summed in the
+    // same order, as walking each subset's bits (v - term is v + (-term) exactly), without
+    // the bit loop and the sign branch (8D 150 points: time_search 3.63 -> 3.27 s).
+    double row_abs[SubsetTable::kMaxColumns];
+    for (int j = 0; j < columns(); ++j) row_abs[j] = std::fabs(row[j]);
+    const SubsetTable::Term* t = subsets_->terms_of_size(r + 1).data();
+    constexpr double kSign[2] = {1.0, -1.0};  // -1 * term is -term exactly
     for (std::uint32_t mask : subsets_->of_size(r + 1)) {
       double v = 0.0, a = 0.0;
-      int position = 0;  // index of column j within mask: gives the cofactor sign
-      for (std::uint32_t rest = mask; rest; rest &= rest - 1, ++position) {
-        const int j = __builtin_ctz(rest);
-        const std::uint32_t sub = mask & ~(std::uint32_t{1} << j);
-        const double term = row[j] * value_[sub];
-        // Sign of the cofactor of entry (r, j) in the minor: (-1)^(r + position).
-        if ((r + position) & 1) v -= term; else v += term;
-        a += std::fabs(row[j]) * abs_[sub];
+      for (int p = 0; p <= r; ++p, ++t) {
+        const double term = row[t->column] * value_[t->sub];
+        v += kSign[t->negative] * term;
+        a += row_abs[t->column] * abs_[t->sub];
       }
       value_[mask] = v;
       abs_[mask] = a;
