@@ -221,6 +221,9 @@ class SearchKernel final : public FacetSearch::Kernel {
   // The blocks of a group whose box prune's closed-side filter does not certify wholly on the
   // closed side.
   unsigned boxes_maybe_open_side(const double* boxes) const;
+  // The lanes (kPairs pairs of a value and its absolute tree) whose sign the orientation's
+  // filter certifies negative, as a bit mask.
+  unsigned certified_negative(const Pair* value, const Pair* abs_tree) const;
   // The squared distances to the ball's centre of a block's points (transposed coordinates),
   // and lower bounds of those of the points in a group's boxes.
   void point_distances(const double* lanes, double* distance2) const;
@@ -549,6 +552,21 @@ void SearchKernel<D>::scan_blocks_for_open_side(std::int32_t begin, std::int32_t
 }
 
 template <int D>
+unsigned SearchKernel<D>::certified_negative(const Pair* value, const Pair* abs_tree) const {
+  // certified_sign_with's test for -1 with the orientation's error bound, lane by lane: bit l
+  // of the result is set when lane l's value is certified negative.
+  const Pair gamma = {orient_gamma_, orient_gamma_};
+  const Pair low = {geometry::kFilterUnderflow, geometry::kFilterUnderflow};
+  const Pair high = {geometry::kFilterOverflow, geometry::kFilterOverflow};
+  unsigned negative = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    const auto certified = (abs_tree[i] > low) & (abs_tree[i] < high) & (value[i] < -(gamma * abs_tree[i]));
+    negative |= static_cast<unsigned>((certified[0] & 1) | (certified[1] & 2)) << (2 * i);
+  }
+  return negative;
+}
+
+template <int D>
 unsigned SearchKernel<D>::boxes_maybe_open_side(const double* boxes) const {
   constexpr unsigned kAll = (1u << LeafBlocks::kLanes) - 1;
   if (!facet_clean_) return kAll;
@@ -573,15 +591,7 @@ unsigned SearchKernel<D>::boxes_maybe_open_side(const double* boxes) const {
       m_abs[i] += a_abs * (abs_lo > abs_hi ? abs_lo : abs_hi);
     }
   }
-  const Pair gamma = {orient_gamma_, orient_gamma_};
-  const Pair low = {geometry::kFilterUnderflow, geometry::kFilterUnderflow};
-  const Pair high = {geometry::kFilterOverflow, geometry::kFilterOverflow};
-  unsigned closed = 0;
-  for (int i = 0; i < kPairs; ++i) {
-    const auto certified = (m_abs[i] > low) & (m_abs[i] < high) & (m[i] < -(gamma * m_abs[i]));
-    closed |= static_cast<unsigned>((certified[0] & 1) | (certified[1] & 2)) << (2 * i);
-  }
-  return ~closed & kAll;
+  return ~certified_negative(m, m_abs) & kAll;
 }
 
 template <int D>
@@ -606,15 +616,7 @@ unsigned SearchKernel<D>::maybe_open_side(const double* lanes, int count) const 
       o_abs[i] += a_abs * (row < zero ? -row : row);
     }
   }
-  const Pair gamma = {orient_gamma_, orient_gamma_};
-  const Pair low = {geometry::kFilterUnderflow, geometry::kFilterUnderflow};
-  const Pair high = {geometry::kFilterOverflow, geometry::kFilterOverflow};
-  unsigned closed = 0;
-  for (int i = 0; i < kPairs; ++i) {
-    const auto certified = (o_abs[i] > low) & (o_abs[i] < high) & (o[i] < -(gamma * o_abs[i]));
-    closed |= static_cast<unsigned>((certified[0] & 1) | (certified[1] & 2)) << (2 * i);
-  }
-  return ~closed & all;
+  return ~certified_negative(o, o_abs) & all;
 }
 
 template <int D>
