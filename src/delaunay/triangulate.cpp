@@ -5,13 +5,13 @@
 //   3. for each open facet, the point that closes it into a Delaunay simplex (facet_search.hpp);
 //   4. each new simplex is recorded, positively oriented; its other facets are opened, or closed
 //      when already open, and closing a facet links the two simplices as neighbours (2.5).
-// The queue (facet_queue.hpp) is the paper's FIFO or, by default from 3D on, the spatial order
+// The queue (facet_queue.hpp) is the paper's FIFO or, by default in 3D to 5D, the spatial order
 // (SearchOptions::facet_order): least smallest vertex id first, the ids following the kd-tree,
 // so that the frontier sweeps through space (3D, 1M uniform points: 35 000 open facets at most
-// instead of 151 000, the search 22% faster). Under the spatial order the facets leave the
-// queue in batches into a fixed window ahead of their turns (Lookahead), the same for every
-// thread count; the order of the turns, and so the output, depends on that window and on
-// nothing else. With Options::threads > 1, step 3 runs ahead on helper threads
+// instead of 151 000, the search 27% faster on 1 thread, 17% on 2). Under the spatial order
+// the facets leave the queue in batches into a fixed window ahead of their turns (Lookahead),
+// the same for every thread count; the order of the turns, and so the output, depends on that
+// window and on nothing else. With Options::threads > 1, step 3 runs ahead on helper threads
 // (SearchPipeline below), and the sort, the kd-tree and the first facet's scans are split
 // between the threads; steps 2 and 4 stay on the calling thread, in the serial order, so the
 // output does not change.
@@ -27,6 +27,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -208,15 +209,19 @@ struct Lookahead {
 // The spatial order's parameters, chosen from measurements (README.md, "The order of the open
 // facets"). Keys are the smallest vertex id >> 3, blocks of 8 points: on uniform and gaussian
 // points in 3D, blocks of 1 to 512 points did not differ beyond the noise; on the 60^3 grid,
-// 64 and 512 were slower (by 10%); 8 keeps the bucket array at one int per point. The window is the FIFO pipeline's for 2 threads; batches of 2 runs halved the
-// wasted searches of batches of 1 run or of single facets (3D, 1M points, 2 threads: 45 000
-// instead of 100 000).
+// 64 and 512 were slower (by 10%); 8 keeps the bucket array at one int per point. The window
+// is the FIFO pipeline's for 2 threads; batches of 2 runs (256) halved the wasted searches of
+// batches of 1 run (3D, 1M points, 2 threads: 42 000 to 48 000 instead of 100 000), and
+// batches of single facets cost the calling thread a window update per turn.
 constexpr int kSpatialBlockShift = 3;
 constexpr Lookahead kSpatialLookahead{1024, 256};
 
-// Whether the facets take their turns in the spatial order in dimension d.
+// Whether the facets take their turns in the spatial order in dimension d. `automatic`: where
+// it won (search time, 1 thread: 3D 1M uniform -27%, 4D 100k -16%, 5D 5000 -5%); not in 2D
+// (1M uniform: -3% on 1 thread, +1% on 2, within the noise) nor from 6D on (6D 1000: +1%,
+// 7D 1000: +11%).
 bool spatial_order(FacetOrder order, int d) {
-  if (order == FacetOrder::automatic) return d >= 3;  // 2D: no gain measured
+  if (order == FacetOrder::automatic) return d >= 3 && d <= 5;
   return order == FacetOrder::spatial;
 }
 
@@ -233,11 +238,26 @@ struct SearchTotals {
   }
 };
 
-// One thread: each facet searched when its turn comes. The facets leave the queue `ahead`
-// turns before their turn, into a ring: 1 for FIFO (the order does not depend on it), the
-// threads' window for the spatial order, where it does (see SearchPipeline).
-template <class Queue>
-void search_serially(Frontier<Queue>& frontier, engine::FacetSearch& search, int d, Lookahead lookahead, SearchTotals& totals) {
+// One thread, FIFO: each facet searched when its turn comes, taken out of the queue then.
+void search_serially(Frontier<FacetQueue>& frontier, engine::FacetSearch& search, int d, SearchTotals& totals) {
+  std::vector<std::int32_t> ids(static_cast<std::size_t>(d)), derived(derived_block_size(d));
+  FacetInfo info{};
+  const std::uint64_t exact_before = geometry::exact_evaluations();
+  while (!frontier.queue_empty()) {
+    const bool closed = frontier.pop(ids.data(), info);
+    if (!frontier.take(ids.data(), info, closed)) continue;
+    const std::int32_t apex = search.find_apex(ids.data(), info.sigma, totals.counters);
+    if (apex >= 0) derive_other_facets(ids.data(), info.sigma, apex, d, derived.data());
+    frontier.close(ids.data(), info, apex, derived.data());
+  }
+  totals.exact = geometry::exact_evaluations() - exact_before;
+}
+
+// One thread, spatial order: the same, but the facets leave the queue ahead of their turn,
+// into a ring, by the pipeline's rule (Lookahead), on which the order depends. (The loop
+// above is this one with a lookahead of 1, without the ring: 2.5% faster in 3D.)
+void search_serially(Frontier<engine::SpatialFacetQueue>& frontier, engine::FacetSearch& search, int d, Lookahead lookahead,
+                     SearchTotals& totals) {
   const std::size_t ahead = lookahead.size;
   std::vector<std::int32_t> ids(ahead * static_cast<std::size_t>(d)), derived(derived_block_size(d));
   std::vector<FacetInfo> info(ahead);
@@ -594,7 +614,8 @@ void search(Frontier<Queue>& frontier, const engine::FirstFacet& first, const en
   frontier.open_first(first);
   if (team.threads() == 1) {
     engine::FacetSearch search(points, options);
-    search_serially(frontier, search, points.dim, lookahead.size == 0 ? Lookahead{1, 1} : lookahead, totals);
+    if constexpr (std::is_same_v<Queue, FacetQueue>) search_serially(frontier, search, points.dim, totals);
+    else search_serially(frontier, search, points.dim, lookahead, totals);
   } else {
     frontier.mark_closures();
     SearchPipeline<Queue> pipeline(points, options, team.threads(), frontier, lookahead);
