@@ -88,7 +88,7 @@ std::string delaunay_help() {
          "\n"
          "                        (default full); fifo and spatial fix the order in which\n"
          "                        open facets are searched (the paper's FIFO, or the spatial\n"
-         "                        order that full uses from 3D on): the simplices are the\n"
+         "                        order that full uses in 3D to 5D): the simplices are the\n"
          "                        same, listed in another order\n"
          "      --threads N       threads to use (default 0: one per core); the output is the\n"
          "                        same for every N\n"

@@ -134,11 +134,14 @@ TEST(FacetOrder, SpatialWorkCountersAreTheSameForEveryThreadCount) {
   }
 }
 
-TEST(FacetOrder, AutomaticIsSpatialFromThreeDimensionsAndFifoInTwo) {
+TEST(FacetOrder, AutomaticIsSpatialInThreeToFiveDimensionsAndFifoElsewhere) {
   const PointCloud plane = drange::generate_points(Distribution::Uniform, 5000, 2, 11);
   EXPECT_EQ(run(plane, FacetOrder::automatic).simplices, run(plane, FacetOrder::fifo).simplices);
-  for (const int d : {3, 4}) {
-    const PointCloud points = drange::generate_points(Distribution::Uniform, 3000, d, 12);
+  const PointCloud six = drange::generate_points(Distribution::Uniform, 150, 6, 14);
+  EXPECT_EQ(run(six, FacetOrder::automatic).simplices, run(six, FacetOrder::fifo).simplices);
+  EXPECT_NE(run(six, FacetOrder::spatial).simplices, run(six, FacetOrder::fifo).simplices);
+  for (const int d : {3, 4, 5}) {
+    const PointCloud points = drange::generate_points(Distribution::Uniform, d == 5 ? 600 : 3000, d, 12);
     EXPECT_EQ(run(points, FacetOrder::automatic).simplices, run(points, FacetOrder::spatial).simplices) << d;
   }
   EXPECT_EQ(drange::Options{}.search.facet_order, FacetOrder::automatic);

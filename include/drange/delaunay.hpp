@@ -16,7 +16,7 @@ namespace drange {
 // The order in which the open facets take their turns (paper, section 2.3: FIFO). It changes
 // the simplices' numbering and order, never the set of simplices.
 enum class FacetOrder {
-  automatic,  // by dimension: spatial in 3D and above, FIFO in 2D (where spatial was slower)
+  automatic,  // by dimension, where each was faster: spatial in 3D to 5D, FIFO in 2D and from 6D on
   fifo,       // the paper's queue
   // The facet whose smallest vertex is least in the kd-tree's point order (a space-filling
   // one) comes first, by blocks of points, FIFO within a block and in a fixed window of facets

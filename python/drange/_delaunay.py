@@ -24,7 +24,7 @@ class Delaunay(PointSetAttributes):
         The search variant: "full" (default), or one of the paper's ablations
         ("scan", "kdtree", "no-prune", "no-order", "paper", ...), for comparison;
         "fifo" and "spatial" fix the order in which open facets are taken (the
-        paper's FIFO, or the spatial order that "full" uses from 3D on). The set of
+        paper's FIFO, or the spatial order that "full" uses in 3D to 5D). The set of
         simplices is the same for every variant; their order is not.
     progress : callable, keyword only
         Called as progress(simplices_found) every 65536 simplices, and once at the end.
