@@ -42,6 +42,7 @@ struct SearchOptions {
   // Query the candidate's ball itself (enlarged by its error bound), not only its bounding box
   // (2.4 approximates the sphere by a hypercube, "the rougher the larger d is").
   bool ball_query = true;
+  // Which open facet is searched next (ours too: it changes the simplices' order, not the set).
   FacetOrder facet_order = FacetOrder::automatic;
 };
 
