@@ -4,25 +4,27 @@
 # generates the inputs into bench/data (git-ignored) and runs every (input, peer) pair in a
 # process of its own, with a timeout; writes one Markdown table (and a .csv of the raw lines).
 #
-#   bench/run.sh [--quick] [--ablation] [--micro] [--timeout S] [-o FILE]
+#   bench/run.sh [--quick] [--ablation] [--beyond] [--micro] [--timeout S] [-o FILE]
 #
 #   (none)       the standard set and the ablation          -> bench/results.md
 #   --quick      a subset, under 2 minutes on 2 cores        -> bench/results-quick.md
 #   --ablation   the ablation table alone                   -> bench/results-ablation.md
+#   --beyond     7D 4 500 points, 600 s limit (about 25 min) -> bench/results-beyond.md
 #   --micro      also run the Google Benchmark microbenchmarks (appended to the file)
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 command_line="bench/run.sh $*"
-quick=0; ablation=0; micro=0; output=""; timeout=()
+quick=0; ablation=0; beyond=0; micro=0; output=""; timeout=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1 ;;
     --ablation) ablation=1 ;;
+    --beyond) beyond=1 ;;
     --micro) micro=1 ;;
     --timeout) timeout=(--timeout "$2"); shift ;;
     -o) output="$2"; shift ;;
-    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
@@ -42,6 +44,8 @@ cmake --build "$build" -j"$(nproc)" >&2
 args=(--build "$build" --data "$root/bench/data" --command "$command_line" "${timeout[@]}")
 if [ $quick -eq 1 ]; then
   args+=(--quick); output="${output:-$root/bench/results-quick.md}"
+elif [ $beyond -eq 1 ]; then
+  args+=(--beyond); output="${output:-$root/bench/results-beyond.md}"
 elif [ $ablation -eq 1 ]; then
   args+=(--ablation-only); output="${output:-$root/bench/results-ablation.md}"
 else

@@ -43,9 +43,10 @@ Triangulation run(const PointCloud& points, int threads, bool seeds = true) {
 
 // Every thread count gives the serial run's arrays, byte for byte, and its statistics (all
 // but the times, the thread count and the wasted searches); the serial result is valid.
-// The seed candidates (SearchOptions::seed_candidate) come from a thread's own recent
-// searches, so with them the work counters (calls, points tested, candidates, exact
-// fallbacks) depend on which thread searched which facet; without them, they do not.
+// The seed candidates (SearchOptions::seed_candidate) come from the recent searches of all
+// threads, in the order the threads happened to make them, so with them the work counters
+// (calls, points tested, candidates, exact fallbacks) depend on the timing; without them,
+// they do not.
 void expect_same_for_every_thread_count(const std::string& name, const PointCloud& points, bool seeds);
 
 void expect_same_for_every_thread_count(const std::string& what, const PointCloud& points) {

@@ -68,10 +68,12 @@ struct Options {
   // abandon the run: delaunay() then throws that exception. Empty: never called.
   std::function<void(std::size_t simplices)> progress;
   // Threads to use: 0 means one per hardware thread (std::thread::hardware_concurrency), 1 the
-  // serial run. The result, simplex numbers and statistics included (except the times and
-  // Statistics::wasted_searches), is the same for every count. With more than one, the facets'
-  // searches run on helper threads, ahead of the calling thread, which records the simplices
-  // in the serial order and is the only one that calls `progress`. A program that runs several
+  // serial run. The result, simplex numbers included, is the same for every count; so are the
+  // statistics, except the times, Statistics::wasted_searches and the search's work counters
+  // (search_calls, points_tested, candidates, exact_fallbacks: the seed candidates, shared by
+  // the threads, depend on the order in which the threads happen to search). With more than
+  // one, the facets' searches run on helper threads, ahead of the calling thread, which records
+  // the simplices in the serial order and is the only one that calls `progress`. A program that runs several
   // triangulations at once on its own threads should give each 1 (or its share of the cores):
   // with 0, each call starts one thread per core, and the cores are oversubscribed.
   int threads = 0;

@@ -38,15 +38,17 @@ def test_other_python_threads_run_during_a_computation():
 
 def test_ctrl_c_interrupts_a_long_run():
     points = sample("uniform", 3000000, 2, seed=1)  # several seconds of work
+    seen = []
     timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()
-    start = time.monotonic()
     try:
         with pytest.raises(KeyboardInterrupt):
-            drange.Delaunay(points, threads=1)
+            drange.Delaunay(points, threads=1, progress=seen.append)
     finally:
         timer.cancel()
-    assert time.monotonic() - start < 4.0  # stopped early, not at the end
+    # Stopped early, not at the end (about 6 million triangles); counted in simplices rather
+    # than seconds, so that a loaded machine cannot fail the test.
+    assert len(seen) < 60 and (not seen or seen[-1] < 4000000)
 
 
 def test_ctrl_c_in_a_separate_interpreter():

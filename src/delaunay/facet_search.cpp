@@ -9,7 +9,6 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
-#include <vector>
 
 #include "geometry/error_bound.hpp"
 #include "geometry/minors.hpp"
@@ -25,13 +24,11 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 inline std::uint32_t bit(int j) { return std::uint32_t{1} << j; }
 // d <= 11 (prepare_points.cpp): rows of d + 1 entries, d + 2 ranks.
 constexpr int kMaxRow = 12;
-// Seeds: for each point, the apexes of the last kSeeds searches whose facet held it.
-constexpr int kSeeds = 2;
 
 template <int D>
 class SearchKernel final : public FacetSearch::Kernel {
  public:
-  SearchKernel(const PointStore& points, const SearchOptions& options);
+  SearchKernel(const PointStore& points, const SearchOptions& options, SeedMemory& seeds);
   std::int32_t find_apex(const std::int32_t* facet, int sigma, SearchCounters& counters) override;
 
   // kd-tree visitor interface (spatial/kdtree.hpp).
@@ -143,20 +140,19 @@ class SearchKernel final : public FacetSearch::Kernel {
   // Per point (scratch).
   std::array<double, kMaxRow> row_{};
   SearchCounters* counters_ = nullptr;
-  // Seeds (SearchOptions::seed_candidate): recent_[id * kSeeds + i], -1 when none yet.
-  std::vector<std::int32_t> recent_;
+  SeedMemory& seeds_;  // SearchOptions::seed_candidate
 };
 
 template <int D>
-SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& options)
+SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& options, SeedMemory& seeds)
     : points_(points),
       options_(options),
       d_(points.dim),
       orient_gamma_(geometry::gamma_bound(geometry::laplace_roundings(points.dim, 1))),
       lifted_gamma_(geometry::gamma_bound(
           geometry::laplace_roundings(points.dim + 1, geometry::lifted_entry_roundings(points.dim)))),
-      minors_(points.dim + 1) {
-  if (options_.seed_candidate) recent_.assign(static_cast<std::size_t>(points.size) * kSeeds, -1);
+      minors_(points.dim + 1),
+      seeds_(seeds) {
   if (points_.dyadic) {
     for (int size = 0; size <= d_; ++size)
       exact_limits_[static_cast<std::size_t>(size)] = std::ldexp(1.0, 52 + points_.unit_exponent * size);
@@ -399,11 +395,11 @@ std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, Se
   candidate_ = -1;
   reset_box();
   if (options_.seed_candidate) {
-    for (int i = 0; i < d; ++i) {
-      const std::int32_t* seeds = &recent_[static_cast<std::size_t>(facet[i]) * kSeeds];
-      for (int k = 0; k < kSeeds; ++k)
-        if (seeds[k] >= 0) consider(seeds[k]);
-    }
+    for (int i = 0; i < d; ++i)
+      for (int k = 0; k < SeedMemory::kSeeds; ++k) {
+        const std::int32_t seed = seeds_.seed(facet[i], k);
+        if (seed >= 0) consider(seed);
+      }
   }
   if (options_.use_kdtree && options_.bottom_up) {
     counters.calls += points_.tree.search_from<D>(*this, points_.tree.leaf_of(facet[0]));
@@ -414,11 +410,7 @@ std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, Se
     for (std::int32_t id = 0; id < points_.size; ++id) consider(id);
   }
   if (options_.seed_candidate && candidate_ >= 0) {
-    for (int i = 0; i < d; ++i) {
-      std::int32_t* seeds = &recent_[static_cast<std::size_t>(facet[i]) * kSeeds];
-      for (int k = kSeeds - 1; k > 0; --k) seeds[k] = seeds[k - 1];
-      seeds[0] = candidate_;
-    }
+    for (int i = 0; i < d; ++i) seeds_.remember(facet[i], candidate_);
   }
   return candidate_;
 }
@@ -442,18 +434,28 @@ int search_leaf_size(int dim) {
   return dim < static_cast<int>(std::size(kByDimension)) ? kByDimension[dim] : kByDimension[std::size(kByDimension) - 1];
 }
 
-FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options, KernelChoice choice) {
-  switch (choice == KernelChoice::FixedDimension ? points.dim : 0) {
-    case 2: kernel_ = std::make_unique<SearchKernel<2>>(points, options); break;
-    case 3: kernel_ = std::make_unique<SearchKernel<3>>(points, options); break;
-    case 4: kernel_ = std::make_unique<SearchKernel<4>>(points, options); break;
-    case 5: kernel_ = std::make_unique<SearchKernel<5>>(points, options); break;
-    case 6: kernel_ = std::make_unique<SearchKernel<6>>(points, options); break;
-    case 7: kernel_ = std::make_unique<SearchKernel<7>>(points, options); break;
-    case 8: kernel_ = std::make_unique<SearchKernel<8>>(points, options); break;
-    default: kernel_ = std::make_unique<SearchKernel<0>>(points, options); break;
+namespace {
+std::unique_ptr<FacetSearch::Kernel> make_kernel(const PointStore& points, const SearchOptions& options, SeedMemory& seeds,
+                                                 FacetSearch::KernelChoice choice) {
+  switch (choice == FacetSearch::KernelChoice::FixedDimension ? points.dim : 0) {
+    case 2: return std::make_unique<SearchKernel<2>>(points, options, seeds);
+    case 3: return std::make_unique<SearchKernel<3>>(points, options, seeds);
+    case 4: return std::make_unique<SearchKernel<4>>(points, options, seeds);
+    case 5: return std::make_unique<SearchKernel<5>>(points, options, seeds);
+    case 6: return std::make_unique<SearchKernel<6>>(points, options, seeds);
+    case 7: return std::make_unique<SearchKernel<7>>(points, options, seeds);
+    case 8: return std::make_unique<SearchKernel<8>>(points, options, seeds);
+    default: return std::make_unique<SearchKernel<0>>(points, options, seeds);
   }
 }
+}  // namespace
+
+FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options, KernelChoice choice)
+    : own_seeds_(std::make_unique<SeedMemory>(options.seed_candidate ? points.size : 0)),
+      kernel_(make_kernel(points, options, *own_seeds_, choice)) {}
+
+FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options, SeedMemory& seeds)
+    : kernel_(make_kernel(points, options, seeds, KernelChoice::FixedDimension)) {}
 
 FacetSearch::~FacetSearch() = default;
 

@@ -32,6 +32,7 @@
 #include <memory>
 
 #include "delaunay/point_store.hpp"
+#include "delaunay/seed_memory.hpp"
 #include "drange/delaunay.hpp"
 
 namespace drange::engine {
@@ -52,8 +53,11 @@ class FacetSearch {
   // Which compilation of the search runs: the one for the points' dimension where there is
   // one (d = 2..8), or the one for any d (the tests compare the two).
   enum class KernelChoice { FixedDimension, AnyDimension };
+  // With seeds of its own (SeedMemory), for a search on one thread.
   FacetSearch(const PointStore& points, const SearchOptions& options,
               KernelChoice choice = KernelChoice::FixedDimension);
+  // Sharing `seeds` with the searches of other threads; `seeds` must outlive this search.
+  FacetSearch(const PointStore& points, const SearchOptions& options, SeedMemory& seeds);
   ~FacetSearch();
   FacetSearch(const FacetSearch&) = delete;
   FacetSearch& operator=(const FacetSearch&) = delete;
@@ -70,6 +74,7 @@ class FacetSearch {
   };
 
  private:
+  std::unique_ptr<SeedMemory> own_seeds_;  // when no memory is shared
   std::unique_ptr<Kernel> kernel_;
 };
 

@@ -327,7 +327,8 @@ class ClosurePredictor {
 // Several threads (Options::threads > 1). The calling thread runs the serial loop's order
 // unchanged: facets take their turns in queue order, and it alone records the simplices (the
 // facet table, the queue, the simplices and neighbours are its own). The searches are
-// read-only (points and kd-tree are shared; each thread has its own FacetSearch scratch) and a
+// read-only (points and kd-tree are shared; each thread has its own FacetSearch scratch, and
+// the seeds, hints that never change a result, are shared: seed_memory.hpp) and a
 // facet's result depends on that facet only, so they can run ahead: the facets next in the
 // queue are copied into a window, a ring of slots, where every thread (the calling one too,
 // between the turns it records) claims runs of consecutive facets, searches them in order and
@@ -353,7 +354,12 @@ class SearchPipeline {
   // spatial order, the fixed window and batch that define the order.
   SearchPipeline(const engine::PointStore& points, const SearchOptions& options, int threads, Frontier<Queue>& frontier,
                  Lookahead lookahead)
-      : d_(points.dim), threads_(threads), points_(points), options_(options), frontier_(frontier) {
+      : d_(points.dim),
+        threads_(threads),
+        points_(points),
+        options_(options),
+        frontier_(frontier),
+        seeds_(options.seed_candidate ? points.size : 0) {
     std::size_t window = lookahead.size;
     if (window == 0) {
       window = 64;
@@ -383,7 +389,7 @@ class SearchPipeline {
         [&](int rank) {
           // Each thread makes its own tools: their memory then comes from its own allocator
           // arena, and no two threads write to one cache line while they search.
-          Worker worker(points_, options_, d_);
+          Worker worker(points_, options_, seeds_, d_);
           if (rank == 0) {
             lead(worker, totals);
             stop();  // done: the helpers return
@@ -416,8 +422,8 @@ class SearchPipeline {
   };
   // One thread's tools.
   struct Worker {
-    Worker(const engine::PointStore& points, const SearchOptions& options, int d)
-        : search(points, options), predictor(d), facet(static_cast<std::size_t>(d)) {}
+    Worker(const engine::PointStore& points, const SearchOptions& options, engine::SeedMemory& seeds, int d)
+        : search(points, options, seeds), predictor(d), facet(static_cast<std::size_t>(d)) {}
     engine::FacetSearch search;
     ClosurePredictor predictor;
     // The facet being searched, copied out of the window: the search reads its ids for every
@@ -590,6 +596,7 @@ class SearchPipeline {
   const engine::PointStore& points_;
   const SearchOptions& options_;
   Frontier<Queue>& frontier_;
+  engine::SeedMemory seeds_;  // one for all threads (seed_memory.hpp)
   // The window: facet k in slot k mod size. Arrays, not a struct per slot: threads take
   // neighbouring facets in runs, so a cache line moves between cores once for several facets.
   std::size_t mask_ = 0;
