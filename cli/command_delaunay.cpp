@@ -86,7 +86,10 @@ std::string delaunay_help() {
              "                        ") +
          search_variant_names() +
          "\n"
-         "                        (default full)\n"
+         "                        (default full); fifo and spatial fix the order in which\n"
+         "                        open facets are searched (the paper's FIFO, or the spatial\n"
+         "                        order that full uses in 3D to 5D): the simplices are the\n"
+         "                        same, listed in another order\n"
          "      --threads N       threads to use (default 0: one per core); the output is the\n"
          "                        same for every N\n"
          "  -q, --quiet           no progress line, no report of duplicate points\n"

@@ -1,5 +1,6 @@
 // tests/cli_test.cpp: the `drange` command run as a user runs it (through the shell, with
 // files and redirections): outputs, messages, and the documented exit code of each outcome.
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -320,6 +321,39 @@ TEST(Cli, ThreadsGiveTheSameBytes) {
   }
   const CliRun stats = run_cli(dir, {"delaunay", dir.file("p.txt"), "-o", dir.file("s.txt"), "--stats", "--threads", "3"});
   EXPECT_TRUE(contains(stats.err, " threads=3 ")) << stats.err;
+}
+
+// The same in 3D, where `full` takes the open facets in the spatial order, and with that
+// order forced in 2D; --variant fifo lists the same simplices in another order.
+TEST(Cli, ThreadsGiveTheSameBytesUnderTheSpatialOrder) {
+  TempDir dir;
+  ASSERT_EQ(run_cli(dir, {"generate", "uniform", "8000", "3", "-o", dir.file("p3.txt")}).code, 0);
+  ASSERT_EQ(run_cli(dir, {"generate", "uniform", "8000", "2", "-o", dir.file("p2.txt")}).code, 0);
+  for (const auto& [input, variant] : {std::pair<std::string, std::string>{"p3.txt", "full"}, {"p2.txt", "spatial"}}) {
+    std::string first;
+    for (const char* threads : {"1", "2", "3", "4"}) {
+      const CliRun run = run_cli(dir, {"delaunay", dir.file(input), "-o", dir.file("s.txt"), "--variant", variant, "--threads", threads});
+      ASSERT_EQ(run.code, 0) << run.err;
+      const std::string out = read_text(dir.file("s.txt"));
+      if (first.empty()) first = out;
+      EXPECT_EQ(out, first) << input << " --variant " << variant << " --threads " << threads;
+    }
+    ASSERT_EQ(run_cli(dir, {"delaunay", dir.file(input), "-o", dir.file("f.txt"), "--variant", "fifo"}).code, 0);
+    const std::string fifo = read_text(dir.file("f.txt"));
+    EXPECT_NE(fifo, first) << input;
+    const std::size_t width = input == "p3.txt" ? 4 : 3;
+    auto sorted = [&](const std::vector<std::int32_t>& flat) {
+      std::vector<std::vector<std::int32_t>> keys;
+      for (std::size_t i = 0; i < flat.size(); i += width) {
+        keys.emplace_back(flat.begin() + static_cast<long>(i), flat.begin() + static_cast<long>(i + width));
+        std::sort(keys.back().begin(), keys.back().end());
+      }
+      std::sort(keys.begin(), keys.end());
+      return keys;
+    };
+    const int vertices = static_cast<int>(width);
+    EXPECT_EQ(sorted(read_simplices(dir.file("f.txt"), vertices)), sorted(read_simplices(dir.file("s.txt"), vertices))) << input;
+  }
 }
 
 TEST(Cli, BadThreadCountIsAUsageError) {

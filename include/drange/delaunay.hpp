@@ -13,10 +13,21 @@
 
 namespace drange {
 
-// How the next simplex of an open facet is searched (paper, section 2.4). The defaults are
-// the full algorithm; the switches exist so that the gain of each step can be measured. The
-// first three are the paper's; the last two are ours (they change the order in which points
-// are met, never which point is found).
+// The order in which the open facets take their turns (paper, section 2.3: FIFO). It changes
+// the simplices' numbering and order, never the set of simplices.
+enum class FacetOrder {
+  automatic,  // by dimension, where each was faster: spatial in 3D to 5D, FIFO in 2D and from 6D on
+  fifo,       // the paper's queue
+  // The facet whose smallest vertex is least in the kd-tree's point order (a space-filling
+  // one) comes first, by blocks of points, FIFO within a block and in a fixed window of facets
+  // taken ahead: the frontier sweeps through space and stays small.
+  spatial,
+};
+
+// How the next simplex of an open facet is searched (paper, section 2.4), and which facet is
+// searched next. The defaults are the full algorithm; the switches exist so that the gain of
+// each step can be measured. The first three are the paper's; the next three are ours (they
+// change the order in which points are met, never which point is found).
 struct SearchOptions {
   bool use_kdtree = true;               // false: scan every point for every facet (the slow direct algorithm)
   bool prune_closed_side = true;        // 2.4.1: skip kd-tree nodes wholly on the closed side of the facet
@@ -31,10 +42,14 @@ struct SearchOptions {
   // Query the candidate's ball itself (enlarged by its error bound), not only its bounding box
   // (2.4 approximates the sphere by a hypercube, "the rougher the larger d is").
   bool ball_query = true;
+  // Which open facet is searched next (ours too: it changes the simplices' order, not the set).
+  FacetOrder facet_order = FacetOrder::automatic;
 };
 
 // Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order",
-// "paper" (the paper's three steps and nothing else), "no-bottom-up", "no-seed", "no-ball".
+// "paper" (the paper's three steps and nothing else, FIFO order), "no-bottom-up", "no-seed",
+// "no-ball", "fifo" (full with the paper's FIFO facet order in every dimension), "spatial"
+// (full with the spatial facet order in every dimension).
 // Throws UsageError naming the unknown value.
 SearchOptions search_variant(const std::string& name);
 // The names accepted by search_variant, for help texts.

@@ -22,7 +22,10 @@ class Delaunay(PointSetAttributes):
         Threads for the search and for find_simplex; 0 (default) uses all cores.
     variant : str, keyword only
         The search variant: "full" (default), or one of the paper's ablations
-        ("scan", "kdtree", "no-prune", "no-order"), for comparison.
+        ("scan", "kdtree", "no-prune", "no-order", "paper", ...), for comparison;
+        "fifo" and "spatial" fix the order in which open facets are taken (the
+        paper's FIFO, or the spatial order that "full" uses in 3D to 5D). The set of
+        simplices is the same for every variant; their order is not.
     progress : callable, keyword only
         Called as progress(simplices_found) every 65536 simplices, and once at the end.
 

@@ -158,7 +158,7 @@ def test_result_does_not_depend_on_input_order():
 def test_variants_give_the_same_simplices():
     points = sample("uniform", 1000, 2, seed=3)
     reference = set(simplex_keys(drange.Delaunay(points).simplices))
-    for variant in ("no-prune", "no-order", "kdtree", "scan"):
+    for variant in ("no-prune", "no-order", "kdtree", "scan", "fifo", "spatial"):
         assert set(simplex_keys(drange.Delaunay(points, variant=variant).simplices)) == reference
 
 

@@ -1,10 +1,23 @@
-// delaunay/facet_queue.hpp: the open facets waiting for their turn, in FIFO order (paper,
-// section 2.3: the queue beside the facet table).
+// delaunay/facet_queue.hpp: the open facets waiting for their turn (paper, section 2.3: the
+// queue beside the facet table), in one of two orders (SearchOptions::facet_order):
 //
-// A ring of fixed-width entries: the facet queued k-th (its place, counting every push) lives in
-// entry k mod capacity, and the ring doubles when full. No facet moves while it waits except
-// when the ring grows; the vector this replaced dropped its consumed front with a memmove of the
-// rest (3% of a 2D run on one thread).
+//   FacetQueue         FIFO, the paper's order. A ring of fixed-width entries: the facet queued
+//                      k-th (its place, counting every push) lives in entry k mod capacity, and
+//                      the ring doubles when full. No facet moves while it waits except when the
+//                      ring grows; the vector this replaced dropped its consumed front with a
+//                      memmove of the rest (3% of a 2D run on one thread).
+//   SpatialFacetQueue  spatial: the facet whose smallest vertex id, shifted right by a block
+//                      shift, is least comes first; FIFO among equal keys. Point ids follow the
+//                      kd-tree's order, a space-filling one, so the frontier sweeps through space
+//                      instead of growing as a ball: it stays several times smaller in 3D, and
+//                      consecutive searches read the same kd-tree nodes. A bucket queue: one FIFO
+//                      list per key, entries in a slab reused through a free list, and a bit per
+//                      bucket to find the least non-empty one; O(1) per push and pop but for the
+//                      scan of the bits, which is short because the keys popped are local.
+//
+// Both give each waiting facet an entry number (FacetOwner::entry in the facet table), so that
+// a facet closed while it waits can be marked; with threads, a facet that left the queue for
+// the driver's search window is found there by its window position instead (triangulate.cpp).
 #pragma once
 
 #include <cstddef>
@@ -47,6 +60,7 @@ class FacetQueue {
   bool empty() const { return popped_ == pushed_; }
   // The place in the queue that the next push gets, and that the next pop returns.
   std::uint64_t pushed() const { return pushed_; }
+  std::int64_t next_entry() const { return static_cast<std::int64_t>(pushed_); }
   std::uint64_t popped() const { return popped_; }
   // Takes the next facet: its ids and info; returns whether it was closed while it waited.
   bool pop(std::int32_t* ids, FacetInfo& info) {
@@ -60,8 +74,24 @@ class FacetQueue {
     ++popped_;
     return info.sigma == 0;
   }
+  // The same, for the driver's window: its k-th facet is the queue's k-th, so `window` is the
+  // place already, and nothing is kept for release().
+  bool pop(std::int32_t* ids, FacetInfo& info, std::int64_t /*window*/) { return pop(ids, info); }
+  void release(std::int64_t /*entry*/) {}
   // Marks the facet at place `place` (still in the queue) closed.
   void mark_closed(std::uint64_t place) { entry(place)[d_ + 2] = 0; }
+  // A facet closed while it waits, at place `place`: marked when still in the queue (true);
+  // otherwise it is in the driver's window, whose k-th facet is the queue's k-th: `window` is
+  // its place.
+  bool mark_closed(std::int64_t place, std::uint64_t& window) {
+    const auto p = static_cast<std::uint64_t>(place);
+    if (p >= popped_) {
+      mark_closed(p);
+      return true;
+    }
+    window = p;
+    return false;
+  }
 
  private:
   std::int32_t* entry(std::uint64_t place) { return &data_[(static_cast<std::size_t>(place) & mask_) * width_]; }
@@ -82,6 +112,112 @@ class FacetQueue {
   std::size_t width_;  // d ids, owner simplex and face, sigma, opposite, hash
   std::size_t mask_;   // capacity - 1, the capacity a power of two
   std::uint64_t pushed_ = 0, popped_ = 0;
+  std::vector<std::int32_t> data_;
+};
+
+// The spatial order: keys ids[0] >> shift (ids sorted, so ids[0] is the smallest), FIFO among
+// equal keys. A facet's entry is its slab slot, stable while it waits; after pop(), the slot
+// stays the facet's until release() when the caller keeps the facet in a window (threads: so
+// that its closure can still be routed to its window position), or is freed at once.
+class SpatialFacetQueue {
+ public:
+  // Point ids are below `points`.
+  SpatialFacetQueue(int d, std::int32_t points, int shift)
+      : d_(d),
+        width_(static_cast<std::size_t>(d) + 7),
+        shift_(shift),
+        head_((static_cast<std::size_t>(points) >> shift) + 1, -1),
+        tail_(head_.size(), -1),
+        nonempty_(head_.size() / 64 + 1, 0),
+        cursor_(head_.size()) {}
+
+  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return size_; }
+  // The entry that the next push takes.
+  std::int64_t next_entry() const { return free_.empty() ? static_cast<std::int64_t>(data_.size() / width_) : free_.back(); }
+
+  void push(const std::int32_t* ids, std::uint32_t hash, FacetOwner owner, int sigma, std::int32_t opposite) {
+    std::int32_t slot;
+    if (!free_.empty()) {
+      slot = free_.back();
+      free_.pop_back();
+    } else {
+      slot = static_cast<std::int32_t>(data_.size() / width_);
+      data_.resize(data_.size() + width_);
+    }
+    std::int32_t* e = at(slot);
+    const int d = d_;
+    for (int k = 0; k < d; ++k) e[k] = ids[k];
+    e[d] = owner.simplex;
+    e[d + 1] = owner.face;
+    e[d + 2] = sigma;
+    e[d + 3] = opposite;
+    e[d + 4] = static_cast<std::int32_t>(hash);
+    e[d + kNext] = -1;
+    e[d + kWindow] = -1;
+    const std::size_t key = static_cast<std::size_t>(ids[0]) >> shift_;
+    if (head_[key] < 0) {
+      head_[key] = slot;
+      nonempty_[key >> 6] |= std::uint64_t{1} << (key & 63);
+      if (key < cursor_) cursor_ = key;
+    } else {
+      at(tail_[key])[d + kNext] = slot;
+    }
+    tail_[key] = slot;
+    ++size_;
+  }
+
+  // Takes the facet of least key (the queue must not be empty): its ids and info (owner.entry
+  // is its own entry); returns whether it was closed while it waited. With window >= 0, the
+  // entry stays the facet's, at that window position, until release(); otherwise it is freed.
+  bool pop(std::int32_t* ids, FacetInfo& info, std::int64_t window = -1) {
+    std::size_t word = cursor_ >> 6;
+    std::uint64_t bits = nonempty_[word] & (~std::uint64_t{0} << (cursor_ & 63));
+    while (bits == 0) bits = nonempty_[++word];
+    const std::size_t key = word * 64 + static_cast<std::size_t>(__builtin_ctzll(bits));
+    cursor_ = key;
+    const std::int32_t slot = head_[key];
+    std::int32_t* e = at(slot);
+    const int d = d_;
+    head_[key] = e[d + kNext];
+    if (head_[key] < 0) nonempty_[key >> 6] &= ~(std::uint64_t{1} << (key & 63));
+    --size_;
+    for (int k = 0; k < d; ++k) ids[k] = e[k];
+    info.owner = FacetOwner{e[d], e[d + 1], slot};
+    info.sigma = e[d + 2];
+    info.opposite = e[d + 3];
+    info.hash = static_cast<std::uint32_t>(e[d + 4]);
+    if (window >= 0) e[d + kWindow] = static_cast<std::int32_t>(window & 0x7fffffff);
+    else release(slot);
+    return info.sigma == 0;
+  }
+  // Frees the entry of a facet that pop() left in a window. (A stack of free entries, not a
+  // chain through them: the entry's line, last read at pop(), is not written again.)
+  void release(std::int64_t entry) { free_.push_back(static_cast<std::int32_t>(entry)); }
+  // A facet closed while it waits, at entry `entry`: marked when still in the queue (true);
+  // otherwise `window` is the window position that pop() was given, modulo 2^31.
+  bool mark_closed(std::int64_t entry, std::uint64_t& window) {
+    std::int32_t* e = at(static_cast<std::int32_t>(entry));
+    if (e[d_ + kWindow] < 0) {
+      e[d_ + 2] = 0;
+      return true;
+    }
+    window = static_cast<std::uint64_t>(e[d_ + kWindow]);
+    return false;
+  }
+
+ private:
+  static constexpr int kNext = 5, kWindow = 6;  // after the ids: the next entry of the bucket, the window position
+  std::int32_t* at(std::int32_t slot) { return &data_[static_cast<std::size_t>(slot) * width_]; }
+
+  int d_;
+  std::size_t width_;  // d ids, owner simplex and face, sigma, opposite, hash, next, window position
+  int shift_;
+  std::vector<std::int32_t> head_, tail_;  // per key: the first and last entry of its list, -1 if none
+  std::vector<std::uint64_t> nonempty_;     // per key: a bit, set while its list is not empty
+  std::size_t cursor_;                      // every key below it has an empty list
+  std::size_t size_ = 0;
+  std::vector<std::int32_t> free_;  // free entries, the last freed on top
   std::vector<std::int32_t> data_;
 };
 
