@@ -4,7 +4,6 @@
 // threads; `automatic` picks it by dimension; and it keeps the 3D frontier smaller.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <random>
 #include <string>
 #include <utility>
@@ -47,15 +46,8 @@ PointCloud with_duplicates(int d, std::size_t n, unsigned seed) {
 // Every integer point of the circle x^2 + y^2 = 1105^2 (108 of them, cospherical exactly), its
 // centre and integer points inside.
 PointCloud integer_circle() {
-  PointCloud circle{2, {0.0, 0.0}};
-  const long r = 1105;
-  for (long x = -r; x <= r; ++x) {
-    const long y2 = r * r - x * x;
-    const auto y = static_cast<long>(std::llround(std::sqrt(static_cast<double>(y2))));
-    if (y * y != y2) continue;
-    circle.coords.insert(circle.coords.end(), {double(x), double(y)});
-    if (y != 0) circle.coords.insert(circle.coords.end(), {double(x), double(-y)});
-  }
+  PointCloud circle = drange::test::integer_circle_points(1105);
+  circle.coords.insert(circle.coords.end(), {0.0, 0.0});
   std::mt19937_64 rng(6);
   std::uniform_int_distribution<long> coordinate(-700, 700);
   for (int i = 0; i < 300; ++i) circle.coords.insert(circle.coords.end(), {double(coordinate(rng)), double(coordinate(rng))});

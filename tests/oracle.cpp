@@ -3,6 +3,7 @@
 #include "oracle.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace drange::test {
@@ -187,6 +188,19 @@ PointCloud random_integer_points(std::size_t n, int dim, std::int64_t lo, std::i
   for (std::size_t i = 0; i < n * static_cast<std::size_t>(dim); ++i)
     cloud.coords.push_back(static_cast<double>(random.integer(lo, hi)));
   return cloud;
+}
+
+PointCloud integer_circle_points(std::int64_t radius) {
+  PointCloud circle;
+  circle.dim = 2;
+  for (std::int64_t x = -radius; x <= radius; ++x) {
+    const std::int64_t y2 = radius * radius - x * x;
+    const auto y = static_cast<std::int64_t>(std::llround(std::sqrt(static_cast<double>(y2))));
+    if (y * y != y2) continue;
+    circle.coords.insert(circle.coords.end(), {double(x), double(y)});
+    if (y != 0) circle.coords.insert(circle.coords.end(), {double(x), double(-y)});
+  }
+  return circle;
 }
 
 std::vector<const double*> corners(const PointCloud& points, const std::vector<std::int32_t>& ids) {

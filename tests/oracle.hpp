@@ -63,6 +63,10 @@ PointCloud random_points(std::size_t n, int dim, std::uint64_t seed);
 // n points with integer coordinates in [lo, hi]^dim (ties are likely: for degenerate cases).
 PointCloud random_integer_points(std::size_t n, int dim, std::int64_t lo, std::int64_t hi, std::uint64_t seed);
 
+// Every integer point (x, y) with x^2 + y^2 = radius^2: exactly cocircular points (1105 =
+// 5 * 13 * 17 has 108), so every triangle among them is a tie the perturbation breaks.
+PointCloud integer_circle_points(std::int64_t radius);
+
 // Pointers to the points with the given ids, for the predicates' interfaces.
 std::vector<const double*> corners(const PointCloud& points, const std::vector<std::int32_t>& ids);
 

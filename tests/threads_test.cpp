@@ -6,7 +6,6 @@
 
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <cstdint>
 #include <random>
 #include <stdexcept>
@@ -19,6 +18,7 @@
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
 #include "drange/generate.hpp"
+#include "oracle.hpp"
 #include "spatial/kdtree.hpp"
 
 namespace {
@@ -109,15 +109,7 @@ TEST(ThreadsTest, CosphericalInputs) {
   expect_same_for_every_thread_count("sphere 3D 800", drange::generate_points(Distribution::Sphere, 800, 3, 5));
   // The 108 integer points on the circle of radius 1105 = 5 * 13 * 17, its centre, and integer
   // points inside: every triangle among the circle's points is a tie the perturbation breaks.
-  PointCloud circle{2, {}};
-  const long r = 1105;
-  for (long x = -r; x <= r; ++x) {
-    const long y2 = r * r - x * x;
-    const auto y = static_cast<long>(std::llround(std::sqrt(static_cast<double>(y2))));
-    if (y * y != y2) continue;
-    circle.coords.insert(circle.coords.end(), {double(x), double(y)});
-    if (y != 0) circle.coords.insert(circle.coords.end(), {double(x), double(-y)});
-  }
+  PointCloud circle = drange::test::integer_circle_points(1105);
   ASSERT_EQ(circle.size(), 108u);
   circle.coords.insert(circle.coords.end(), {0.0, 0.0});
   std::mt19937_64 rng(6);

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "delaunay/facet_table.hpp"
+#include "util/return_free_memory.hpp"
 
 namespace drange::engine {
 
@@ -105,6 +106,8 @@ class FacetQueue {
       for (std::size_t k = 0; k < width_; ++k) to[k] = from[k];
     }
     data_.swap(bigger);
+    std::vector<std::int32_t>().swap(bigger);
+    util::return_free_memory();
     mask_ = mask;
   }
 

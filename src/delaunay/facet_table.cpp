@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "util/return_free_memory.hpp"
+
 namespace drange::engine {
 
 long FacetTable::find(const std::int32_t* ids, std::uint32_t h) const {
@@ -63,6 +65,8 @@ void FacetTable::rehash(std::size_t capacity) {
     while (!empty(slot)) slot = (slot + 1) & mask_;
     std::copy(entry, entry + stride(), slot_ids(slot));
   }
+  std::vector<std::int32_t>().swap(old);
+  util::return_free_memory();
 }
 
 }  // namespace drange::engine
