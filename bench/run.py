@@ -47,12 +47,11 @@ STANDARD = [
 ]
 # Rows for drange alone: the uniform input of the 3D grid's size, for the grid-to-uniform ratio.
 DRANGE_ONLY = {("uniform", 216000, 3)}
-# The d = 7 target of issue 4: a size where the peers take over 10 minutes (`--beyond`, with a
-# 600 s limit). Chosen from the standard set's 7D rows: CGAL dD static took 39.8 s at 1 000
-# points and about 172 s at 2 000 (the issue's figure; over 90 s here), so about n^2.1, which
-# gives some 15 minutes at 4 500; Qhull took 67 s at 1 000 and over 300 s at 2 000. drange
-# took 258 s there (one thread, 22.3M simplices, 2.3 GiB; one run on a shared machine).
-BEYOND = [("uniform", 4500, 7)]
+# The d = 7 target of issue 4: sizes where the peers take over 10 minutes (`--beyond`, with a
+# 600 s limit). Qhull took 67 s at 1 000 points and over 300 s at 2 000 (the issue's figure):
+# over 600 s at 4 500. CGAL dD static took 39.8 s at 1 000 and 424 s at 4 500 (about n^1.3):
+# so the row of 7 000. A peer that timed out on uniform input is not run on more points.
+BEYOND = [("uniform", 4500, 7), ("uniform", 7000, 7)]
 QUICK = [("uniform", 100000, 2), ("grid", 90000, 2), ("uniform", 100000, 3), ("uniform", 10000, 4), ("uniform", 3000, 5)]
 # Ablation: (distribution, n, d, variants).
 ABLATION = [
@@ -222,7 +221,8 @@ def main():
         table.append("| " + " | ".join(head) + " |")
         table.append("|" + "---|" * len(head))
         # Peers that timed out or ran out of memory on uniform input, with the smallest n where they
-        # did: not run on uniform input of a higher d with at least as many points (more work).
+        # did: not run on uniform input of a higher d with at least as many points, or of the same
+        # d with more (more work).
         failed_at = {}
         for dist, n, d in rows:
             path = input_file(args.build, args.data, dist, n, d)
@@ -256,7 +256,8 @@ def main():
                 if p not in applicable:
                     cells += ["n/a", "", ""]
                     continue
-                if dist == "uniform" and p in failed_at and failed_at[p][0] < d and failed_at[p][1] <= n:
+                if dist == "uniform" and p in failed_at and (failed_at[p][0] < d and failed_at[p][1] <= n or
+                                                             failed_at[p][0] == d and failed_at[p][1] < n):
                     r = {"status": "skipped"}
                     log(f"  {p:12s} skipped (timed out or out of memory at a lower d)")
                 else:
@@ -298,8 +299,8 @@ def main():
                "peak RSS minus the RSS after reading the input, divided by the simplices. Ratio = drange seconds / "
                "peer seconds: below 1 drange is faster. A count in parentheses is a peer's simplex count where it "
                "differs from drange's (Fortune counts Voronoi vertices: fewer than triangles on cocircular input). "
-               f"`skipped`: the peer timed out or ran out of memory on uniform input of a lower d with no more points, and "
-               f"was not run. drange's own limit is {own_timeout} s, so that its time is known where a peer times out; "
+               f"`skipped`: the peer timed out or ran out of memory on uniform input of a lower d with no more points "
+               f"(or of the same d with fewer), and was not run. drange's own limit is {own_timeout} s, so that its time is known where a peer times out; "
                f"a ratio `< x` is then drange's time over the peer's limit. drange on every core runs up to "
                f"{MAX_THREADED_D}D; CGAL dD dynamic up to 5D (slower than the static dimension in every row). "
                f"A row with `not run` in every peer's column is for drange alone (a uniform input of a grid's size).")
