@@ -49,7 +49,7 @@ STANDARD = [
 DRANGE_ONLY = {("uniform", 216000, 3)}
 # The d = 7 target of issue 4: sizes where the peers take over 10 minutes (`--beyond`, with a
 # 600 s limit). Qhull took 67 s at 1 000 points and over 300 s at 2 000 (the issue's figure):
-# over 600 s at 4 500. CGAL dD static took 39.8 s at 1 000 and 424 s at 4 500 (about n^1.3):
+# over 600 s at 4 500. CGAL dD static took 39.8 s at 1 000 and 424 s at 4 500 (about n^1.6):
 # so the row of 7 000. A peer that timed out on uniform input is not run on more points.
 BEYOND = [("uniform", 4500, 7), ("uniform", 7000, 7)]
 QUICK = [("uniform", 100000, 2), ("grid", 90000, 2), ("uniform", 100000, 3), ("uniform", 10000, 4), ("uniform", 3000, 5)]
