@@ -26,42 +26,62 @@ namespace {
 using drange::PointCloud;
 using drange::engine::FacetSearch;
 
-// The two kernels' apexes for both sides of every facet of (up to 100 of) the simplices of
-// the triangulation of `points`.
-void expect_kernels_agree(const PointCloud& points, const std::string& what) {
-  const drange::Triangulation t = drange::delaunay(points);
-  const int d = points.dim;
-  drange::engine::Team team(1);
-  std::vector<drange::Duplicate> duplicates;
-  const drange::engine::PointStore store =
-      drange::engine::prepare_points(points, drange::engine::search_leaf_size(d), duplicates, team);
-  std::vector<std::int32_t> id_of(points.size(), -1);  // input index -> the engine's point id
-  for (std::int32_t id = 0; id < store.size; ++id) id_of[static_cast<std::size_t>(store.input_index[static_cast<std::size_t>(id)])] = id;
-  const std::size_t stride = std::max<std::size_t>(1, t.size() / 100);
-  std::size_t checked = 0;
-  for (const char* variant : {"full", "paper", "no-ball"}) {
-    const drange::SearchOptions options = drange::search_variant(variant);
-    FacetSearch fixed(store, options, FacetSearch::KernelChoice::FixedDimension);
-    FacetSearch any(store, options, FacetSearch::KernelChoice::AnyDimension);
-    drange::engine::SearchCounters fixed_counters, any_counters;
-    std::size_t own_apex_found = 0;
-    checked = 0;
-    for (std::size_t s = 0; s < t.size(); s += stride, ++checked) {
+// A triangulation of `points`, the engine's store of the same points, and the facets of (up to
+// 100 of) its simplices in the engine's sorted ids.
+struct SampledFacets {
+  SampledFacets(const PointCloud& points, int leaf_size)
+      : t(drange::delaunay(points)), d(points.dim), store(prepare(points, leaf_size)), id_of(points.size(), -1) {
+    for (std::int32_t id = 0; id < store.size; ++id) id_of[static_cast<std::size_t>(store.input_index[static_cast<std::size_t>(id)])] = id;
+  }
+  static drange::engine::PointStore prepare(const PointCloud& points, int leaf_size) {
+    drange::engine::Team team(1);
+    std::vector<drange::Duplicate> duplicates;
+    return drange::engine::prepare_points(points, leaf_size, duplicates, team);
+  }
+  // Calls visit(s, opposite, facet, own) for facet `opposite` of sampled simplex s: its sorted
+  // ids, and `own`, the id of the simplex's vertex off the facet. Returns the simplices visited.
+  template <class Visit>
+  std::size_t for_each(Visit visit) const {
+    const std::size_t stride = std::max<std::size_t>(1, t.size() / 100);
+    std::size_t visited = 0;
+    for (std::size_t s = 0; s < t.size(); s += stride, ++visited) {
       const std::int32_t* simplex = &t.simplices[s * static_cast<std::size_t>(d + 1)];
       for (int opposite = 0; opposite <= d; ++opposite) {
         std::vector<std::int32_t> facet;
         for (int i = 0; i <= d; ++i)
           if (i != opposite) facet.push_back(id_of[static_cast<std::size_t>(simplex[i])]);
         std::sort(facet.begin(), facet.end());
-        const std::int32_t own = id_of[static_cast<std::size_t>(simplex[opposite])];
-        for (int sigma : {1, -1}) {
-          const std::int32_t a = fixed.find_apex(facet.data(), sigma, fixed_counters);
-          const std::int32_t b = any.find_apex(facet.data(), sigma, any_counters);
-          ASSERT_EQ(a, b) << what << " variant " << variant << " simplex " << s << " facet " << opposite << " side " << sigma;
-          if (a == own) ++own_apex_found;
-        }
+        visit(s, opposite, facet, id_of[static_cast<std::size_t>(simplex[opposite])]);
       }
     }
+    return visited;
+  }
+
+  drange::Triangulation t;
+  int d;
+  drange::engine::PointStore store;
+  std::vector<std::int32_t> id_of;  // input index -> the engine's point id
+};
+
+// The two kernels' apexes for both sides of every facet of (up to 100 of) the simplices of
+// the triangulation of `points`.
+void expect_kernels_agree(const PointCloud& points, const std::string& what) {
+  const SampledFacets sample(points, drange::engine::search_leaf_size(points.dim));
+  const int d = points.dim;
+  for (const char* variant : {"full", "paper", "no-ball"}) {
+    const drange::SearchOptions options = drange::search_variant(variant);
+    FacetSearch fixed(sample.store, options, FacetSearch::KernelChoice::FixedDimension);
+    FacetSearch any(sample.store, options, FacetSearch::KernelChoice::AnyDimension);
+    drange::engine::SearchCounters fixed_counters, any_counters;
+    std::size_t own_apex_found = 0;
+    const std::size_t checked = sample.for_each([&](std::size_t s, int opposite, const std::vector<std::int32_t>& facet, std::int32_t own) {
+      for (int sigma : {1, -1}) {
+        const std::int32_t a = fixed.find_apex(facet.data(), sigma, fixed_counters);
+        const std::int32_t b = any.find_apex(facet.data(), sigma, any_counters);
+        ASSERT_EQ(a, b) << what << " variant " << variant << " simplex " << s << " facet " << opposite << " side " << sigma;
+        if (a == own) ++own_apex_found;
+      }
+    });
     // Exactly one side of each facet is the simplex's own.
     EXPECT_EQ(own_apex_found, checked * static_cast<std::size_t>(d + 1)) << what << " variant " << variant;
     EXPECT_EQ(fixed_counters.points_tested, any_counters.points_tested) << what << " variant " << variant;
@@ -94,38 +114,24 @@ TEST(FacetSearch, FixedDimensionKernelsMatchTheAnyDimensionKernelOnIntegerPoints
 // one group of blocks (64 points) when leaf_size is, so that the block scan skips blocks and
 // groups by their boxes.
 void expect_tree_search_matches_scan(const PointCloud& points, int leaf_size, const std::string& what) {
-  const drange::Triangulation t = drange::delaunay(points);
-  const int d = points.dim;
-  drange::engine::Team team(1);
-  std::vector<drange::Duplicate> duplicates;
-  const drange::engine::PointStore store = drange::engine::prepare_points(points, leaf_size, duplicates, team);
-  std::vector<std::int32_t> id_of(points.size(), -1);
-  for (std::int32_t id = 0; id < store.size; ++id) id_of[static_cast<std::size_t>(store.input_index[static_cast<std::size_t>(id)])] = id;
-  FacetSearch scan(store, drange::search_variant("scan"), FacetSearch::KernelChoice::AnyDimension);
-  const std::size_t stride = std::max<std::size_t>(1, t.size() / 100);
+  const SampledFacets sample(points, leaf_size);
+  FacetSearch scan(sample.store, drange::search_variant("scan"), FacetSearch::KernelChoice::AnyDimension);
   for (const char* variant : {"full", "no-seed", "no-bottom-up", "no-prune"}) {
     const drange::SearchOptions options = drange::search_variant(variant);
-    FacetSearch fixed(store, options, FacetSearch::KernelChoice::FixedDimension);
-    FacetSearch any(store, options, FacetSearch::KernelChoice::AnyDimension);
+    FacetSearch fixed(sample.store, options, FacetSearch::KernelChoice::FixedDimension);
+    FacetSearch any(sample.store, options, FacetSearch::KernelChoice::AnyDimension);
     drange::engine::SearchCounters counters;
-    for (std::size_t s = 0; s < t.size(); s += stride) {
-      const std::int32_t* simplex = &t.simplices[s * static_cast<std::size_t>(d + 1)];
-      for (int opposite = 0; opposite <= d; ++opposite) {
-        std::vector<std::int32_t> facet;
-        for (int i = 0; i <= d; ++i)
-          if (i != opposite) facet.push_back(id_of[static_cast<std::size_t>(simplex[i])]);
-        std::sort(facet.begin(), facet.end());
-        for (int sigma : {1, -1}) {
-          const std::int32_t expected = scan.find_apex(facet.data(), sigma, counters);
-          ASSERT_EQ(fixed.find_apex(facet.data(), sigma, counters), expected)
-              << what << " leaf size " << leaf_size << " variant " << variant << " simplex " << s << " facet " << opposite
-              << " side " << sigma;
-          ASSERT_EQ(any.find_apex(facet.data(), sigma, counters), expected)
-              << what << " leaf size " << leaf_size << " variant " << variant << " simplex " << s << " facet " << opposite
-              << " side " << sigma << " (any d)";
-        }
+    sample.for_each([&](std::size_t s, int opposite, const std::vector<std::int32_t>& facet, std::int32_t) {
+      for (int sigma : {1, -1}) {
+        const std::int32_t expected = scan.find_apex(facet.data(), sigma, counters);
+        ASSERT_EQ(fixed.find_apex(facet.data(), sigma, counters), expected)
+            << what << " leaf size " << leaf_size << " variant " << variant << " simplex " << s << " facet " << opposite
+            << " side " << sigma;
+        ASSERT_EQ(any.find_apex(facet.data(), sigma, counters), expected)
+            << what << " leaf size " << leaf_size << " variant " << variant << " simplex " << s << " facet " << opposite
+            << " side " << sigma << " (any d)";
       }
-    }
+    });
   }
 }
 
