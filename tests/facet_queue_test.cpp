@@ -10,6 +10,7 @@
 #include <random>
 #include <set>
 #include <utility>
+#include <string>
 #include <vector>
 
 #include "delaunay/facet_queue.hpp"
@@ -27,6 +28,18 @@ struct Queued {
   std::uint32_t hash;
   std::uint64_t place;
 };
+
+// What pop() returned besides the ids: the closed mark and the facet's info, as pushed (its
+// entry is the model's `place`).
+void expect_popped(bool closed, const FacetInfo& info, const Queued& expected, const std::string& at) {
+  EXPECT_EQ(closed, expected.sigma == 0) << at;
+  EXPECT_EQ(info.sigma, expected.sigma) << at;
+  EXPECT_EQ(info.owner.simplex, expected.simplex) << at;
+  EXPECT_EQ(info.owner.face, expected.face) << at;
+  EXPECT_EQ(info.owner.entry, static_cast<std::int64_t>(expected.place)) << at;
+  EXPECT_EQ(info.opposite, expected.opposite) << at;
+  EXPECT_EQ(info.hash, expected.hash) << at;
+}
 
 TEST(FacetQueue, FifoThroughWrapAroundAndGrowth) {
   for (int d = 2; d <= 4; ++d) {
@@ -57,13 +70,7 @@ TEST(FacetQueue, FifoThroughWrapAroundAndGrowth) {
         ASSERT_EQ(queue.popped(), expected.place);
         const bool closed = queue.pop(ids.data(), info);
         ASSERT_EQ(ids, expected.ids) << "d=" << d << " step " << step;
-        EXPECT_EQ(closed, expected.sigma == 0);
-        EXPECT_EQ(info.sigma, expected.sigma);
-        EXPECT_EQ(info.owner.simplex, expected.simplex);
-        EXPECT_EQ(info.owner.face, expected.face);
-        EXPECT_EQ(info.owner.entry, static_cast<std::int64_t>(expected.place));
-        EXPECT_EQ(info.opposite, expected.opposite);
-        EXPECT_EQ(info.hash, expected.hash);
+        expect_popped(closed, info, expected, "d=" + std::to_string(d));
         model.pop_front();
       }
       ASSERT_EQ(queue.empty(), model.empty());
@@ -112,13 +119,7 @@ void exercise_spatial_queue(int d, int shift, bool windowed, std::uint32_t seed)
       const Queued expected = model.begin()->second;
       const bool closed = queue.pop(ids.data(), info, windowed ? position : -1);
       ASSERT_EQ(ids, expected.ids) << at << " step " << step;
-      EXPECT_EQ(closed, expected.sigma == 0) << at;
-      EXPECT_EQ(info.sigma, expected.sigma);
-      EXPECT_EQ(info.owner.simplex, expected.simplex);
-      EXPECT_EQ(info.owner.face, expected.face);
-      EXPECT_EQ(info.owner.entry, static_cast<std::int64_t>(expected.place));
-      EXPECT_EQ(info.opposite, expected.opposite);
-      EXPECT_EQ(info.hash, expected.hash);
+      expect_popped(closed, info, expected, at);
       model.erase(model.begin());
       waiting.erase(info.owner.entry);
       if (windowed) {

@@ -339,7 +339,7 @@ class ClosurePredictor {
 // When facets leave the queue matters for the spatial order (a facet opened meanwhile with a
 // smaller key would go first), not for FIFO. So under FIFO the window grows with the thread
 // count and is topped up whenever a run fits; under the spatial order it is the Lookahead,
-// the serial loop's too: 1024 facets, topped up by batches of 128, for every thread count.
+// the serial loop's too: 1024 facets, topped up by batches of 256, for every thread count.
 //
 // A facet searched ahead can turn out to be closed at its turn (the serial loop would not have
 // searched it): a wasted search, counted in Statistics::wasted_searches. Three things keep
@@ -614,7 +614,7 @@ class SearchPipeline {
   std::condition_variable wake_;
 };
 
-// Step 3 from the first facet to the end, on the team's threads. `window`: see SearchPipeline.
+// Step 3 from the first facet to the end, on the team's threads. `lookahead`: see SearchPipeline.
 template <class Queue>
 void search(Frontier<Queue>& frontier, const engine::FirstFacet& first, const engine::PointStore& points,
             const SearchOptions& options, engine::Team& team, Lookahead lookahead, SearchTotals& totals) {
