@@ -54,7 +54,8 @@ std::set<std::vector<std::vector<double>>> geometric(const Triangulation& t, con
 // It shares nothing with the engine: the predicates are the test's own rational references
 // (oracle.hpp), so neither the search, the kd-tree, the first facet, the facet table nor the
 // library's filters are involved.
-std::vector<Simplex> perturbed_oracle(const PointCloud& points) {
+// The perturbation's ranks: the lexicographic order of the coordinates (distinct points).
+std::vector<std::int64_t> lexicographic_ranks(const PointCloud& points) {
   const int d = points.dim;
   const auto n = static_cast<std::int32_t>(points.size());
   std::vector<std::int32_t> order(static_cast<std::size_t>(n));
@@ -64,6 +65,13 @@ std::vector<Simplex> perturbed_oracle(const PointCloud& points) {
   });
   std::vector<std::int64_t> rank(static_cast<std::size_t>(n));
   for (std::int32_t r = 0; r < n; ++r) rank[static_cast<std::size_t>(order[static_cast<std::size_t>(r)])] = r;
+  return rank;
+}
+
+std::vector<Simplex> perturbed_oracle(const PointCloud& points) {
+  const int d = points.dim;
+  const auto n = static_cast<std::int32_t>(points.size());
+  const std::vector<std::int64_t> rank = lexicographic_ranks(points);
   std::vector<Simplex> out;
   Simplex subset(static_cast<std::size_t>(d + 1));
   std::function<void(int, std::int32_t)> choose = [&](int position, std::int32_t from) {
@@ -164,6 +172,85 @@ TEST(DelaunayOracle, DegenerateTinyInputsMatchPerturbedBruteForce) {
     const Triangulation t = drange::delaunay(points);
     EXPECT_EQ(canonical(t), perturbed_oracle(points)) << name;
     expect_valid(points, t, name);
+  }
+}
+
+// Every simplex of t is empty of every input point under the symbolic perturbation, by the
+// rational reference: O(simplices * n). With the validator's covering, this identifies the
+// perturbed Delaunay triangulation on inputs too large for perturbed_oracle.
+void expect_perturbed_empty(const PointCloud& points, const Triangulation& t, const std::string& what) {
+  const int d = points.dim;
+  const std::vector<std::int64_t> rank = lexicographic_ranks(points);
+  int violations = 0;
+  for (std::size_t s = 0; s < t.size() && violations < 3; ++s) {
+    const Simplex simplex(t.simplex(s), t.simplex(s) + d + 1);
+    const std::vector<const double*> p = drange::test::corners(points, simplex);
+    const int o = drange::test::reference_orientation(d, p);
+    std::vector<const double*> rows(p.begin() + 1, p.end());
+    rows.push_back(nullptr);
+    std::vector<std::int64_t> ranks;
+    for (std::int32_t i : simplex) ranks.push_back(rank[static_cast<std::size_t>(i)]);
+    ranks.push_back(0);
+    for (std::size_t q = 0; q < points.size(); ++q) {
+      if (std::find(simplex.begin(), simplex.end(), static_cast<std::int32_t>(q)) != simplex.end()) continue;
+      rows.back() = points.point(q);
+      ranks.back() = rank[q];
+      if (o * drange::test::reference_lifted_sign_perturbed(d, p[0], rows, ranks) < 0) {
+        ADD_FAILURE() << what << ": point " << q << " is inside simplex " << s << " under the perturbation";
+        ++violations;
+        break;
+      }
+    }
+  }
+}
+
+// Every `step`-th (in lexicographic order) integer point at distance `radius` from the origin
+// in d dimensions: exactly cospherical.
+PointCloud integer_sphere_points(int d, std::int64_t radius, std::size_t step) {
+  PointCloud out{d, {}};
+  std::vector<std::int64_t> x(static_cast<std::size_t>(d));
+  std::size_t seen = 0;
+  std::function<void(int, std::int64_t)> place = [&](int axis, std::int64_t left) {  // left: radius^2 still to place
+    if (axis == d - 1) {
+      const auto last = static_cast<std::int64_t>(std::llround(std::sqrt(static_cast<double>(left))));
+      if (last * last != left) return;
+      for (const std::int64_t v : {-last, last}) {
+        if (v == last && last == 0) break;  // zero once
+        x.back() = v;
+        if (seen++ % step == 0)
+          for (const std::int64_t c : x) out.coords.push_back(static_cast<double>(c));
+      }
+      return;
+    }
+    for (std::int64_t v = -radius; v <= radius; ++v) {
+      if (v * v > left) continue;
+      x[static_cast<std::size_t>(axis)] = v;
+      place(axis + 1, left - v * v);
+    }
+  };
+  place(0, radius * radius);
+  return out;
+}
+
+// Exactly cospherical integer points: every closing search meets ties, which the search
+// decides in double precision when its minors provably did not round (small radii) and by
+// GMP when they might have (radii near 2^12 to 2^15: products beyond 2^53 units). Either way
+// the result must be the perturbed Delaunay triangulation.
+TEST(DelaunayOracle, CosphericalIntegerPointsGiveThePerturbedTriangulation) {
+  std::vector<std::pair<std::string, PointCloud>> cases = {
+      {"circle 1105", drange::test::integer_circle_points(1105)},
+      {"circle 32045", drange::test::integer_circle_points(32045)},
+      {"sphere 45", integer_sphere_points(3, 45, 4)},
+      {"sphere 4095", integer_sphere_points(3, 4095, 466)},
+      {"4-sphere 15", integer_sphere_points(4, 15, 60)},
+  };
+  PointCloud with_centre = integer_sphere_points(3, 65, 3);
+  with_centre.coords.insert(with_centre.coords.end(), {0, 0, 0, 1, 2, 3});
+  cases.emplace_back("sphere 65 and two inside", with_centre);
+  for (const auto& [name, points] : cases) {
+    const Triangulation t = drange::delaunay(points);
+    expect_valid(points, t, name);
+    expect_perturbed_empty(points, t, name);
   }
 }
 

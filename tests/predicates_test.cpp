@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/error_bound.hpp"
 #include "geometry/exact.hpp"
 #include "geometry/minors.hpp"
 #include "geometry/predicates.hpp"
@@ -276,6 +277,53 @@ TEST(PredicateTest, PerturbedLiftedSignOnCubeCornersAndGrids) {
       expect_perturbation_properties(d, all, seed);
     }
   }
+}
+
+// The exactness proofs read exponents from the bits: against frexp on normal, subnormal and
+// negative values, and the limits against ldexp over the whole normal range.
+TEST(ErrorBound, LowestBitExponentAndPowerOfTwoLimitMatchTheLibrary) {
+  const double values[] = {1.0, -1.0, 3.0, 0.75, -6.0, 0x1p-1022, 0x1p-1074, 3 * 0x1p-1074, 0x1.8p-1030, 1e300, -1e-310,
+                           std::nextafter(1.0, 2.0), 0.1, 4503599627370497.0, 9007199254740992.0};
+  for (const double x : values) {
+    int exponent = 0;
+    double mantissa = std::frexp(x, &exponent);  // x = mantissa * 2^exponent, 0.5 <= |mantissa| < 1
+    int lowest = exponent;
+    while (mantissa != std::trunc(mantissa)) {
+      mantissa *= 2;
+      --lowest;
+    }
+    while (std::fmod(mantissa, 2.0) == 0.0) {
+      mantissa /= 2;
+      ++lowest;
+    }
+    EXPECT_EQ(geometry::lowest_bit_exponent(x), lowest) << x;
+  }
+  for (int e = -1022; e <= 1023; ++e) EXPECT_EQ(geometry::power_of_two_limit(e), std::ldexp(1.0, e)) << e;
+  EXPECT_EQ(geometry::power_of_two_limit(1024), INFINITY);
+  EXPECT_EQ(geometry::power_of_two_limit(-1023), 0.0);  // below the normal range: no limit holds
+}
+
+// Integer points whose 2x2 products need more than 53 bits: (a, b) and (a + 1, b + 1) have the
+// determinant a - b, tiny beside the products near 2^56. Their entries are exact integers,
+// so only the bound on the products and on the whole (small_orientation's proof) keeps a
+// rounded zero from being taken for exact. Also with a difference that itself rounds (the
+// base far on the other side) and in 3D, where the 2x2 minors are the intermediate terms.
+TEST(PredicateTest, RoundedIntegerEvaluationsAreNotTakenForExact) {
+  int decided_by_rounding = 0;
+  for (const double a : {0x1p27 + 1, 0x1p28 + 3, 0x1p30 + 5, 0x1p26 - 3}) {
+    for (const double delta : {-2.0, -1.0, 0.0, 1.0, 2.0}) {
+      const double b = a - delta;
+      SCOPED_TRACE("a=" + std::to_string(a) + " delta=" + std::to_string(delta));
+      expect_predicates_agree(cloud_of(2, {0, 0, a, b, a + 1, b + 1, 1, 2}));
+      expect_predicates_agree(cloud_of(3, {0, 0, 0, a, b, 0, a + 1, b + 1, 0, 0, 0, 1, 1, 2, 3}));
+      expect_predicates_agree(cloud_of(3, {0, 0, 0, a, 0, b, 0, 1, 0, a + 1, 0, b + 1, 1, 2, 3}));
+      // The base at -(2^52 - a): every difference is 2^52 more than above, and some round.
+      const double far = -(0x1p52 - a);
+      expect_predicates_agree(cloud_of(2, {far, 0, a, b, a + 1, b + 1, 1, 2}));
+      if (a * (b + 1) - b * (a + 1) != a - b) ++decided_by_rounding;
+    }
+  }
+  EXPECT_GT(decided_by_rounding, 0) << "some cases must round in double precision";
 }
 
 // Regression: both products of a 2x2 minor underflow to zero (1e-135 * 1e-190), and a later

@@ -245,7 +245,9 @@ class SearchKernel final : public FacetSearch::Kernel {
   int d_;
   double orient_gamma_;  // error bound factors (error_bound.hpp) of O(x) and I(p, x)
   double lifted_gamma_;
-  std::array<double, kMaxRow + 1> exact_limits_{};  // 2^(52 + unit_exponent * size), dyadic points
+  // 2^(52 + unit_exponent * units), dyadic points: the limit below which a minor with that many
+  // units (its columns, the lift column counting twice) was computed exactly.
+  std::array<double, kMaxRow + 3> exact_limits_{};
 
   // Per facet.
   const std::int32_t* facet_ = nullptr;
@@ -265,6 +267,11 @@ class SearchKernel final : public FacetSearch::Kernel {
   // is below orient_exact_limit_ (dyadic points, see set_facet).
   bool orientation_exact_ = false;
   double orient_exact_limit_ = 0.0;
+  // The same for the lifted determinants: true when every minor of the facet rows (lift column
+  // included) is exact; then the candidate's w (candidate_exact_) and I(p, x) are exact when
+  // their absolute trees are below their limits, and a tie I = 0 is known without GMP.
+  bool lifted_exact_ = false;
+  bool candidate_exact_ = false;
   std::array<double, kMaxRow> centroid_{};
   std::array<const double*, kMaxRow> rows_{};  // f_1, ..., f_{d-1}, p, q for the exact predicates
   std::array<std::int64_t, kMaxRow + 1> ranks_{};  // ranks of f_0, ..., f_{d-1}, p, q
@@ -296,8 +303,8 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       seeds_(seeds),
       blocks_(points, options.use_kdtree && points.dim >= kMinBlockDimension) {
   if (points_.dyadic) {
-    for (int size = 0; size <= d_; ++size)
-      exact_limits_[static_cast<std::size_t>(size)] = std::ldexp(1.0, 52 + points_.unit_exponent * size);
+    for (int units = 0; units <= d_ + 2; ++units)
+      exact_limits_[static_cast<std::size_t>(units)] = std::ldexp(1.0, 52 + points_.unit_exponent * units);
     orient_exact_limit_ = exact_limits_[static_cast<std::size_t>(d_)];
   }
 }
@@ -333,10 +340,15 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
   // rounded, and a later dot product a . (x - f0) is exact when its absolute tree is below
   // 2^52 unit^d. This decides points and kd-tree boxes lying exactly on the facet's hyperplane,
   // which integer grids have in every hull face.
-  orientation_exact_ = points_.dyadic && facet_clean_;
-  for (std::uint32_t mask = 1; orientation_exact_ && mask <= spatial; ++mask) {
+  // The lifted minors likewise, with the lift column counting twice (its entries are squares).
+  orientation_exact_ = lifted_exact_ = points_.dyadic && facet_clean_;
+  for (std::uint32_t mask = 1; (orientation_exact_ || lifted_exact_) && mask < bit(d + 1); ++mask) {
     const int size = __builtin_popcount(mask);
-    if (size < d && !(minors_.abs_minor(mask) < exact_limits_[static_cast<std::size_t>(size)])) orientation_exact_ = false;
+    if (size >= d) continue;  // the facet has d - 1 rows
+    const bool lift = (mask & bit(d)) != 0;
+    if (minors_.abs_minor(mask) < exact_limits_[static_cast<std::size_t>(size + lift)]) continue;
+    lifted_exact_ = false;
+    if (!lift) orientation_exact_ = false;
   }
   for (int j = 0; j < d; ++j) {
     const double sign = ((d - 1 + j) & 1) ? -1.0 : 1.0;
@@ -394,6 +406,10 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
   // so its centre is f0 - w_spatial / (2 w_lift) and it passes through f0. The box is the
   // sphere's bounding box, enlarged by the effect of the minors' error bounds on the centre.
   candidate_clean_ = facet_clean_ && watch.clean();
+  // w_j is a d-minor over all columns but j: d units, plus one for the lift column (j < d).
+  candidate_exact_ = lifted_exact_ && candidate_clean_;
+  for (int j = 0; candidate_exact_ && j <= d; ++j)
+    candidate_exact_ = w_abs_[static_cast<std::size_t>(j)] < exact_limits_[static_cast<std::size_t>(j < d ? d + 1 : d)];
   const double gamma = lifted_gamma_;
   const double wd = w_[static_cast<std::size_t>(d)];
   const double ewd = gamma * w_abs_[static_cast<std::size_t>(d)];
@@ -470,7 +486,12 @@ bool SearchKernel<D>::beats_candidate(std::int32_t id) {
     rows_[static_cast<std::size_t>(d)] = points_.point(id);
     ranks_[static_cast<std::size_t>(d + 1)] = points_.rank[static_cast<std::size_t>(id)];
     const geometry::Frame frame{d, d, nullptr, f0_};
-    s = sigma_ * geometry::lifted_sign_perturbed(frame, rows_.data(), ranks_.data());
+    // I(p, x) has d + 2 units (d spatial columns, the lift twice). Exact and zero: a tie
+    // (cospherical points, as in every cell of a grid), which only the perturbation breaks.
+    if (candidate_exact_ && v_abs < exact_limits_[static_cast<std::size_t>(d + 2)])
+      s = v != 0.0 ? (v > 0 ? 1 : -1) : sigma_ * geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data());
+    else
+      s = sigma_ * geometry::lifted_sign_perturbed(frame, rows_.data(), ranks_.data());
   }
   return s < 0;
 }

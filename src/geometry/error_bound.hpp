@@ -12,6 +12,9 @@
 
 #include <cfenv>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #if defined(__x86_64__) && defined(__SSE2__)
 #include <xmmintrin.h>
 #endif
@@ -86,13 +89,29 @@ class FloatingPointWatch {
 };
 #endif
 
-// x = odd * 2^e (x != 0): returns e. A set of doubles with smallest such e is a set of
-// integer multiples of 2^e: the basis of the static exactness proofs (predicates.cpp).
+// x = odd * 2^e (x != 0, finite): returns e. A set of doubles with smallest such e is a set of
+// integer multiples of 2^e: the basis of the static exactness proofs (predicates.cpp). Read
+// from the bits: the degenerate inputs call it for every coordinate of every tie.
 inline int lowest_bit_exponent(double x) {
-  int exponent = 0;
-  const double f = std::frexp(x, &exponent);
-  const auto mantissa = static_cast<unsigned long long>(std::fabs(std::ldexp(f, 53)));
-  return exponent - 53 + __builtin_ctzll(mantissa);
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int biased = static_cast<int>(bits >> 52 & 0x7ff);
+  std::uint64_t mantissa = bits & ((std::uint64_t{1} << 52) - 1);
+  if (biased != 0) mantissa |= std::uint64_t{1} << 52;  // normal: the implicit leading bit
+  // The value is mantissa * 2^(max(biased, 1) - 1075).
+  return (biased != 0 ? biased : 1) - 1075 + __builtin_ctzll(mantissa);
+}
+
+// 2^e as a double for a normal power (-1022 <= e <= 1023); +infinity above, 0 below. Used as
+// an upper limit "x < 2^e": 0 below the normal range only makes such a test fail, which the
+// exactness proofs read as "not proved".
+inline double power_of_two_limit(int e) {
+  if (e > 1023) return std::numeric_limits<double>::infinity();
+  if (e < -1022) return 0.0;
+  const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52;
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
 }
 
 }  // namespace drange::geometry

@@ -50,11 +50,14 @@ template <class UnitOf>
 bool evaluation_is_exact(const MinorTable& minors, int n, int lift_column, UnitOf unit_of) {
   const int unit = unit_of();
   if (unit == std::numeric_limits<int>::max()) return true;  // all coordinates zero
+  // The limit of a minor by its number of columns, the lift column counting twice. 2^52, not
+  // 2^53: a computed bound just below the limit cannot hide a true value above it.
+  std::array<double, SubsetTable::kMaxColumns + 2> limit;
+  for (int columns = 0; columns <= n + 1; ++columns) limit[static_cast<std::size_t>(columns)] = power_of_two_limit(52 + unit * columns);
   for (std::uint32_t mask = 1; mask < (std::uint32_t{1} << n); ++mask) {
     const bool lift = lift_column >= 0 && (mask >> lift_column & 1u);
-    const int columns = __builtin_popcount(mask) + (lift ? 1 : 0);  // the lift column counts twice
-    // 2^52, not 2^53: a computed bound just below the limit cannot hide a true value above it.
-    if (!(minors.abs_minor(mask) < std::ldexp(1.0, 52 + unit * columns))) return false;
+    const int columns = __builtin_popcount(mask) + (lift ? 1 : 0);
+    if (!(minors.abs_minor(mask) < limit[static_cast<std::size_t>(columns)])) return false;
   }
   return true;
 }
@@ -122,19 +125,25 @@ int exact_lifted_sign(const Frame& f, const double* const* points) {
   return bareiss_sign(a, n);
 }
 
-// Orientation for k <= 3 written out: the sign when a filter certifies it, else 0 (the
-// generic path decides). k = 1: the sign of a difference of doubles is exact in round to
-// nearest. k = 2, 3: the Laplace expansion along the last row, with its absolute-value tree
-// and the same error bound as the generic filter (laplace_roundings(k, 1) over-counts these
-// short expressions), under a watch for underflow.
-int small_orientation(const Frame& f, const double* const* points) {
+// Orientation for k <= 3 written out: the sign when a filter certifies it or the evaluation
+// provably did not round, else nullopt (the generic path decides). k = 1: the sign of a
+// difference of doubles is exact in round to nearest. k = 2, 3: the Laplace expansion along
+// the last row, with its absolute-value tree and the same error bound as the generic filter
+// (laplace_roundings(k, 1) over-counts these short expressions), under a watch for underflow.
+// When the bound does not decide, the static proof of evaluation_is_exact on the expansion's
+// own terms: the 2x2 minors (k = 3) and the whole, each below 2^52 of its unit. The entries
+// need no bound of their own: each is multiplied by a nonzero factor of at least one unit,
+// whose product the bounds cover, or by an exact zero, which hides its rounding. That decides
+// the exactly flat subsets of integer grids, which the symbolic perturbation meets at every
+// tie, without a minor table.
+std::optional<int> small_orientation(const Frame& f, const double* const* points) {
   const double* b = f.base;
   if (f.k == 1) {
     const double x = points[0][f.axis(0)], y = b[f.axis(0)];
     return (x > y) - (x < y);
   }
   const FloatingPointWatch watch;
-  double value = 0.0, abs_tree = 0.0;
+  double value = 0.0, abs_tree = 0.0, largest_pair = 0.0;
   if (f.k == 2) {
     const int x = f.axis(0), y = f.axis(1);
     const double a00 = points[0][x] - b[x], a01 = points[0][y] - b[y];
@@ -152,18 +161,63 @@ int small_orientation(const Frame& f, const double* const* points) {
     const double n01 = std::fabs(a00) * std::fabs(a11) + std::fabs(a01) * std::fabs(a10);
     value = a20 * m12 - a21 * m02 + a22 * m01;
     abs_tree = std::fabs(a20) * n12 + std::fabs(a21) * n02 + std::fabs(a22) * n01;
+    largest_pair = std::max({n12, n02, n01});
   }
+  if (!watch.clean()) return std::nullopt;
   const int s = certified_sign(value, abs_tree, laplace_roundings(f.k, 1));
-  return watch.clean() ? s : 0;
+  if (s != 0) return s;
+  const int unit = common_unit_exponent(f.dim, f.base, points, f.k);
+  if (unit == std::numeric_limits<int>::max()) return 0;  // all coordinates zero
+  const bool exact = largest_pair < power_of_two_limit(52 + 2 * unit) &&
+                     abs_tree < power_of_two_limit(52 + f.k * unit);
+  if (exact) return (value > 0) - (value < 0);
+  return std::nullopt;
 }
 
 }  // namespace
 
+// The sign that the symbolic perturbation gives a lifted determinant that is exactly zero.
+// The relative determinant I equals (-1)^(k+1) det M, where M has the homogeneous rows
+// [x_i, |x_i|^2, 1] of (base, p_1, ..., p_{k+1}). Perturbing the lifts by eps_i makes
+// det M(eps) = det M + sum_i eps_i (-1)^(i+k) H_i, with H_i the homogeneous orientation of the
+// other k+1 points. det M = 0 here, so the most perturbed point whose H_i is nonzero decides:
+// sign I(eps) = -(-1)^i (-1)^k sign(orientation of the others, based at the first of them).
+// The points are taken by decreasing rank without sorting, and the others live on the stack
+// up to kInlinePoints: grids reach this once per tie.
+int lifted_tie_sign(const Frame& f, const double* const* points, const std::int64_t* ranks) {
+  constexpr int kInlinePoints = 16;
+  const int count = f.k + 2;
+  std::array<const double*, kInlinePoints> inline_others;
+  std::vector<const double*> heap_others;
+  const double** others = inline_others.data();
+  if (count - 1 > kInlinePoints) {
+    heap_others.resize(static_cast<std::size_t>(count - 1));
+    others = heap_others.data();
+  }
+  const auto point = [&](int j) { return j == 0 ? f.base : points[j - 1]; };
+  std::int64_t below = std::numeric_limits<std::int64_t>::max();  // ranks already tried are >= below
+  for (int tried = 0; tried < count; ++tried) {
+    int i = -1;
+    for (int j = 0; j < count; ++j)
+      if (ranks[j] < below && (i < 0 || ranks[j] > ranks[i])) i = j;
+    below = ranks[i];
+    for (int j = 0, o = 0; j < count; ++j)
+      if (j != i) others[o++] = point(j);
+    Frame g = f;
+    g.base = others[0];
+    const int h = orientation(g, others + 1);
+    if (h != 0) {
+      const int parity = ((i + f.k) & 1) ? -1 : 1;
+      return -parity * h;
+    }
+  }
+  // Only reachable when the k+2 points do not span the k-flat: a caller's bug.
+  throw std::logic_error("lifted_sign_perturbed: the points do not span their flat");
+}
+
 int orientation(const Frame& f, const double* const* points) {
   if (f.k <= 3 && f.k >= 1) {
-    const int s = small_orientation(f, points);
-    if (s != 0) return s;
-    if (f.k == 1) return 0;  // exact
+    if (const std::optional<int> s = small_orientation(f, points)) return *s;
   }
   const auto unit = [&] { return common_unit_exponent(f.dim, f.base, points, f.k); };
   const std::optional<int> s = filtered_sign(f.k, 1, -1, unit, [&](int r, double* row) {
@@ -183,34 +237,7 @@ int lifted_sign(const Frame& f, const double* const* points) {
 
 int lifted_sign_perturbed(const Frame& f, const double* const* points, const std::int64_t* ranks) {
   const int unperturbed = lifted_sign(f, points);
-  if (unperturbed != 0) return unperturbed;
-  // The relative determinant I equals (-1)^(k+1) det M, where M has the homogeneous rows
-  // [x_i, |x_i|^2, 1] of (base, p_1, ..., p_{k+1}). Perturbing the lifts by eps_i makes
-  // det M(eps) = det M + sum_i eps_i (-1)^(i+k) H_i, with H_i the homogeneous orientation of the
-  // other k+1 points. det M = 0 here, so the most perturbed point whose H_i is nonzero decides:
-  // sign I(eps) = -(-1)^i (-1)^k sign(orientation of the others, based at the first of them).
-  const int count = f.k + 2;
-  std::vector<const double*> all(static_cast<std::size_t>(count));
-  all[0] = f.base;
-  for (int i = 1; i < count; ++i) all[static_cast<std::size_t>(i)] = points[i - 1];
-  std::vector<int> order(static_cast<std::size_t>(count));
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return ranks[a] > ranks[b]; });
-  std::vector<const double*> others;
-  for (int i : order) {
-    others.clear();
-    for (int j = 0; j < count; ++j)
-      if (j != i) others.push_back(all[static_cast<std::size_t>(j)]);
-    Frame g = f;
-    g.base = others[0];
-    const int h = orientation(g, others.data() + 1);
-    if (h != 0) {
-      const int parity = ((i + f.k) & 1) ? -1 : 1;
-      return -parity * h;
-    }
-  }
-  // Only reachable when the k+2 points do not span the k-flat: a caller's bug.
-  throw std::logic_error("lifted_sign_perturbed: the points do not span their flat");
+  return unperturbed != 0 ? unperturbed : lifted_tie_sign(f, points, ranks);
 }
 
 int simplex_orientation(int dim, const double* const* simplex) {

@@ -41,6 +41,9 @@ int lifted_sign(const Frame& frame, const double* const* points);
 // k-flat. `ranks[0]` is the base's rank, `ranks[1..k+1]` those of `points`; a larger rank
 // is perturbed more. Ranks must be distinct.
 int lifted_sign_perturbed(const Frame& frame, const double* const* points, const std::int64_t* ranks);
+// lifted_sign_perturbed for a caller that has proved the unperturbed determinant exactly zero
+// (facet_search.cpp does, on dyadic points): the perturbation alone decides.
+int lifted_tie_sign(const Frame& frame, const double* const* points, const std::int64_t* ranks);
 
 // Convenience for full-dimensional simplices (frame = all axes, base = simplex[0]):
 // sign of det[s_1 - s_0, ..., s_d - s_0].
