@@ -2,6 +2,7 @@
 // exact validator on every generated family, degenerate families, permutation invariance,
 // duplicates, the search variants, adjacency, and every error with its message.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "delaunay/simplex_estimate.hpp"
 #include "drange/check.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
@@ -513,6 +515,20 @@ TEST(DelaunayStatistics, CountsAreConsistent) {
   EXPECT_GT(s.peak_rss_bytes, 0u);
   EXPECT_GE(s.seconds_total, s.seconds_search);
   EXPECT_NE(s.summary().find("simplices=" + std::to_string(t.size())), std::string::npos);
+}
+
+// The room made for the simplices before the search (simplex_estimate.hpp) is address space
+// only, so it may be generous, but never more than a quarter of the machine: a reservation
+// beyond what the kernel would grant would fail the triangulation.
+TEST(DelaunayStorage, RoomForTheSimplicesIsBoundedByTheMachine) {
+  const std::size_t quarter =
+      static_cast<std::size_t>(sysconf(_SC_PHYS_PAGES)) / 4 * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  const std::size_t huge = drange::engine::expected_simplices(8, std::size_t{1} << 40);
+  EXPECT_GT(huge, std::size_t{1} << 50);
+  EXPECT_LE(drange::engine::reservable_simplices(huge, 9, 2) * 9 * 2 * sizeof(int), quarter);
+  EXPECT_EQ(drange::engine::reservable_simplices(1000, 9, 2), 1000u);
+  EXPECT_EQ(drange::engine::expected_simplices(2, 1000), 2000u);
+  EXPECT_EQ(drange::engine::expected_simplices(9, 1000), 0u);  // nothing measured beyond 8D
 }
 
 TEST(DelaunayNeighbors, CanBeLeftOut) {

@@ -37,6 +37,7 @@
 #include "delaunay/first_facet.hpp"
 #include "delaunay/prepare_points.hpp"
 #include "delaunay/simplex_facets.hpp"
+#include "delaunay/simplex_estimate.hpp"
 #include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
@@ -106,14 +107,13 @@ class Frontier {
         table_(d),
         queue_(std::move(queue)),
         progress_(progress) {
-    // Room for the simplices up front: growing by doubling copies them all once more, on the
-    // calling thread. A plane triangulation of n points has at most 2n - 5 triangles; uniform
-    // points in 3D give about 6.8n tetrahedra (more are possible: the vectors then grow).
-    // Reserving only takes address space; pages are committed as simplices are written.
-    const auto n = static_cast<std::size_t>(points);
-    const std::size_t expected = d == 2 ? 2 * n : d == 3 ? n * 68 / 10 : 0;
-    simplices_.reserve(expected * static_cast<std::size_t>(width_));
-    neighbors_.reserve(expected * static_cast<std::size_t>(width_));
+    // Room for the simplices up front (simplex_estimate.hpp): growing by doubling copies them
+    // all once more, on the calling thread, and sets the peak memory in high dimensions.
+    const auto width = static_cast<std::size_t>(width_);
+    const std::size_t room =
+        engine::reservable_simplices(engine::expected_simplices(d, static_cast<std::size_t>(points)), width, 2);
+    simplices_.reserve(room * width);
+    neighbors_.reserve(room * width);
   }
 
   void open_first(const engine::FirstFacet& first) {
