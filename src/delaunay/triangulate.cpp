@@ -31,12 +31,12 @@
 #include <utility>
 #include <vector>
 
+#include "delaunay/derived_facets.hpp"
 #include "delaunay/facet_queue.hpp"
 #include "delaunay/facet_search.hpp"
 #include "delaunay/facet_table.hpp"
 #include "delaunay/first_facet.hpp"
 #include "delaunay/prepare_points.hpp"
-#include "delaunay/simplex_facets.hpp"
 #include "delaunay/simplex_estimate.hpp"
 #include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
@@ -46,6 +46,8 @@
 namespace drange {
 namespace {
 
+using engine::derive_other_facets;
+using engine::derived_block_size;
 using engine::FacetInfo;
 using engine::FacetQueue;
 using Clock = std::chrono::steady_clock;
@@ -55,22 +57,6 @@ std::size_t peak_rss_bytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
-}
-
-// The other facets of the simplex found for a facet, derived apart from the shared state (with
-// threads, by the thread that found the apex, so that the calling thread only probes the table
-// and writes): a block of d (d + 2) ints, d facets of d sorted ids (simplex_facets.hpp), their
-// open sides, their hashes.
-std::size_t derived_block_size(int d) { return static_cast<std::size_t>(d) * static_cast<std::size_t>(d + 2); }
-inline void derive_in(const std::int32_t* facet, int sigma, std::int32_t apex, int d, std::int32_t* block) {
-  engine::simplex_other_facets(facet, d, apex, sigma < 0, block, block + d * d);
-  for (int f = 0; f < d; ++f) block[d * d + d + f] = static_cast<std::int32_t>(engine::facet_hash(block + f * d, d));
-}
-void derive_other_facets(const std::int32_t* facet, int sigma, std::int32_t apex, int d, std::int32_t* block) {
-  // The common dimensions with d a constant: the compiler unrolls the short loops.
-  if (d == 2) derive_in(facet, sigma, apex, 2, block);
-  else if (d == 3) derive_in(facet, sigma, apex, 3, block);
-  else derive_in(facet, sigma, apex, d, block);
 }
 
 // Calls Options::progress every kProgressInterval simplices, counting down so that the main
