@@ -20,7 +20,7 @@ namespace drange::engine {
 
 // Where a facet was seen: the simplex, and the index (0..d) of the vertex opposite the facet;
 // and the facet's place in the driver's queue (the number of facets queued before it), so that
-// closing it can mark it there (triangulate.cpp).
+// closing it can mark it there (frontier.hpp).
 struct FacetOwner {
   std::int32_t simplex;
   std::int32_t face;

@@ -13,15 +13,14 @@
 // the same for every thread count; the order of the turns, and so the output, depends on that
 // window and on nothing else. With Options::threads > 1, step 3 runs ahead on helper threads
 // (SearchPipeline below), and the sort, the kd-tree and the first facet's scans are split
-// between the threads; steps 2 and 4 stay on the calling thread, in the serial order, so the
-// output does not change.
+// between the threads; steps 2 and 4 (Frontier, frontier.hpp) stay on the calling thread, in
+// the serial order, so the output does not change.
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
-#include <functional>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -34,10 +33,9 @@
 #include "delaunay/derived_facets.hpp"
 #include "delaunay/facet_queue.hpp"
 #include "delaunay/facet_search.hpp"
-#include "delaunay/facet_table.hpp"
 #include "delaunay/first_facet.hpp"
+#include "delaunay/frontier.hpp"
 #include "delaunay/prepare_points.hpp"
-#include "delaunay/simplex_estimate.hpp"
 #include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
@@ -50,6 +48,7 @@ using engine::derive_other_facets;
 using engine::derived_block_size;
 using engine::FacetInfo;
 using engine::FacetQueue;
+using engine::Frontier;
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
@@ -57,131 +56,6 @@ std::size_t peak_rss_bytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
-}
-
-// Calls Options::progress every kProgressInterval simplices, counting down so that the main
-// loop pays one decrement and one test per simplex (no clock read: the callback reads its own
-// clock, at most once per call).
-class ProgressCountdown {
- public:
-  explicit ProgressCountdown(const std::function<void(std::size_t)>& report) : report_(report) {}
-  void simplex_found(std::size_t found) {
-    if (--countdown_ != 0) return;
-    countdown_ = kProgressInterval;
-    if (report_) report_(found);
-  }
-
- private:
-  const std::function<void(std::size_t)>& report_;
-  std::size_t countdown_ = kProgressInterval;
-};
-
-// The open facets (section 2.3) and the simplices found (2.5): the part of the driver that
-// every thread count shares, run by the calling thread only. Facets leave the queue in its
-// order (Queue: FacetQueue, FIFO, or SpatialFacetQueue); when its turn comes, a facet is either
-// closed already (the simplex on its other side was found while it waited) or gets the result
-// of its search, which close() records.
-template <class Queue>
-class Frontier {
- public:
-  Frontier(int d, std::int32_t points, Triangulation& result, const std::function<void(std::size_t)>& progress, Queue queue)
-      : d_(d),
-        width_(d + 1),
-        simplices_(result.simplices),
-        neighbors_(result.neighbors),
-        stats_(result.stats),
-        table_(d),
-        queue_(std::move(queue)),
-        progress_(progress) {
-    // Room for the simplices up front (simplex_estimate.hpp): growing by doubling copies them
-    // all once more, on the calling thread, and sets the peak memory in high dimensions.
-    const auto width = static_cast<std::size_t>(width_);
-    const std::size_t room =
-        engine::reservable_simplices(engine::expected_simplices(d, static_cast<std::size_t>(points)), width, 2);
-    simplices_.reserve(room * width);
-    neighbors_.reserve(room * width);
-  }
-
-  void open_first(const engine::FirstFacet& first) {
-    queue_.push(first.ids.data(), engine::facet_hash(first.ids.data(), d_), engine::FacetOwner{-1, -1, 0}, first.sigma, -1);
-  }
-  bool queue_empty() const { return queue_.empty(); }
-  // Takes the next facet of the queue; returns whether it was closed while it waited. With
-  // threads, `window` is its position in the search window, where it stays until release().
-  bool pop(std::int32_t* ids, FacetInfo& info, std::int64_t window = -1) { return queue_.pop(ids, info, window); }
-  void release(const FacetInfo& info) { queue_.release(info.owner.entry); }
-  // A facet's turn, in queue order: false when it was closed while it waited (it needs no
-  // search); otherwise it leaves the table, and close() must follow with its search's result.
-  bool take(const std::int32_t* ids, const FacetInfo& info, bool closed) {
-    stats_.max_open_facets = std::max(stats_.max_open_facets, table_.size());
-    if (closed) return false;
-    if (info.owner.simplex < 0 || table_.remove(ids, info.hash)) return true;
-    if (mark_closures_) throw std::logic_error("delaunay: a queued facet is not open");
-    return false;  // closed while it waited
-  }
-  // Threads > 1: mark the facets that close while they wait (in the queue, or in
-  // closed_after_pop() once they left it). The serial loop finds them by the table lookup that
-  // take() makes anyway; marking there would write to a random place of the queue for every
-  // closure (a cache miss each on a large 3D frontier: 5% slower).
-  void mark_closures() { mark_closures_ = true; }
-  // Records the search's result for a facet that take() accepted: the apex, or -1 on the hull;
-  // with an apex, `derived` is derive_other_facets' block.
-  void close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex, const std::int32_t* derived);
-  // The window positions of the facets closed by close() that had already left the queue
-  // (threads > 1: they wait in the search window); the caller marks them and clears the list.
-  std::vector<std::uint64_t>& closed_after_pop() { return closed_after_pop_; }
-  bool table_empty() const { return table_.size() == 0; }
-
- private:
-  int d_, width_;
-  std::vector<std::int32_t>& simplices_;
-  std::vector<std::int32_t>& neighbors_;
-  Statistics& stats_;
-  engine::FacetTable table_;
-  Queue queue_;
-  ProgressCountdown progress_;
-  std::vector<std::uint64_t> closed_after_pop_;
-  bool mark_closures_ = false;
-};
-
-template <class Queue>
-void Frontier<Queue>::close(const std::int32_t* ids, const FacetInfo& info, std::int32_t apex, const std::int32_t* derived) {
-  if (apex < 0) {
-    ++stats_.hull_facets;
-    return;
-  }
-  const engine::FacetOwner owner = info.owner;
-  const auto width = static_cast<std::size_t>(width_);
-  // The new simplex: the facet's vertices, then the apex, whose orientation is sigma; one
-  // transposition of the first two vertices makes it positive.
-  const auto s = static_cast<std::int32_t>(simplices_.size() / width);
-  const std::size_t base = simplices_.size();
-  const bool swapped = info.sigma < 0;
-  for (int i = 0; i < d_; ++i) simplices_.push_back(ids[i]);
-  simplices_.push_back(apex);
-  if (swapped) std::swap(simplices_[base], simplices_[base + 1]);
-  for (int i = 0; i < d_; ++i) neighbors_.push_back(-1);
-  neighbors_.push_back(owner.simplex);
-  if (owner.simplex >= 0) neighbors_[static_cast<std::size_t>(owner.simplex) * width + static_cast<std::size_t>(owner.face)] = s;
-  else ++stats_.hull_facets;  // the first facet lies on the hull
-  // The other facets, facet f omitting vertex f: closed when open already, else opened.
-  const int d = d_;
-  const std::int32_t* open_side = derived + d * d;
-  const std::int32_t* hash = open_side + d;
-  for (int f = 0; f < d; ++f) {
-    const std::int32_t* other = derived + f * d;
-    engine::FacetOwner seen{};
-    const engine::FacetOwner mine{s, f, queue_.next_entry()};
-    if (table_.close_or_open(other, static_cast<std::uint32_t>(hash[f]), mine, &seen)) {
-      neighbors_[base + static_cast<std::size_t>(f)] = seen.simplex;
-      neighbors_[static_cast<std::size_t>(seen.simplex) * width + static_cast<std::size_t>(seen.face)] = s;
-      std::uint64_t window = 0;
-      if (mark_closures_ && !queue_.mark_closed(seen.entry, window)) closed_after_pop_.push_back(window);
-    } else {
-      queue_.push(other, static_cast<std::uint32_t>(hash[f]), mine, open_side[f], simplices_[base + static_cast<std::size_t>(f)]);
-    }
-  }
-  progress_.simplex_found(static_cast<std::size_t>(s) + 1);
 }
 
 // The facets taken out of the queue ahead of their turn: up to `size` (a power of two) ahead,
