@@ -17,7 +17,7 @@
 //
 // Both give each waiting facet an entry number (FacetOwner::entry in the facet table), so that
 // a facet closed while it waits can be marked; with threads, a facet that left the queue for
-// the driver's search window is found there by its window position instead (triangulate.cpp).
+// the driver's search window is found there by its window position instead (search_pipeline.hpp).
 #pragma once
 
 #include <cstddef>
