@@ -17,13 +17,21 @@ void IntegerScale::include(double x) {
 }
 
 mpz_class IntegerScale::integer(double x) const {
-  if (x == 0.0) return 0;
+  mpz_class m;
+  assign_integer(x, m);
+  return m;
+}
+
+void IntegerScale::assign_integer(double x, mpz_class& out) const {
+  if (x == 0.0) {
+    out = 0;
+    return;
+  }
   int exponent = 0;
   const double f = std::frexp(x, &exponent);
-  mpz_class m(std::ldexp(f, 53));  // exact: a 53-bit integer
+  mpz_set_d(out.get_mpz_t(), std::ldexp(f, 53));  // exact: a 53-bit integer
   const long up = static_cast<long>(exponent) - 53 - shift_;
-  mpz_mul_2exp(m.get_mpz_t(), m.get_mpz_t(), static_cast<mp_bitcnt_t>(up));
-  return m;
+  mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(up));
 }
 
 int bareiss_in_place(std::vector<mpz_class>& a, int n, mpz_class& scratch) {

@@ -18,6 +18,8 @@ class IntegerScale {
   // `values` are every coordinate that will be converted; finite.
   void include(double x);
   mpz_class integer(double x) const;
+  // The same into `out`, reusing its limbs (no allocation once `out` is large enough).
+  void assign_integer(double x, mpz_class& out) const;
   long shift() const { return shift_; }
 
  private:
