@@ -19,6 +19,8 @@
 #include <xmmintrin.h>
 #endif
 
+#include "geometry/double_bits.hpp"
+
 namespace drange::geometry {
 
 constexpr double kUnitRoundoff = 0x1p-53;
@@ -93,13 +95,8 @@ class FloatingPointWatch {
 // integer multiples of 2^e: the basis of the static exactness proofs (predicates.cpp). Read
 // from the bits: the degenerate inputs call it for every coordinate of every tie.
 inline int lowest_bit_exponent(double x) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  const int biased = static_cast<int>(bits >> 52 & 0x7ff);
-  std::uint64_t mantissa = bits & ((std::uint64_t{1} << 52) - 1);
-  if (biased != 0) mantissa |= std::uint64_t{1} << 52;  // normal: the implicit leading bit
-  // The value is mantissa * 2^(max(biased, 1) - 1075).
-  return (biased != 0 ? biased : 1) - 1075 + __builtin_ctzll(mantissa);
+  const DoubleParts p = parts_of(x);
+  return p.exponent + __builtin_ctzll(static_cast<unsigned long long>(p.significand < 0 ? -p.significand : p.significand));
 }
 
 // 2^e as a double for a normal power (-1022 <= e <= 1023); +infinity above, 0 below. Used as

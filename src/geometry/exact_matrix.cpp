@@ -2,16 +2,15 @@
 // scaling they start from.
 #include "geometry/exact_matrix.hpp"
 
-#include <cmath>
 #include <utility>
+
+#include "geometry/double_bits.hpp"
 
 namespace drange::geometry {
 
 void IntegerScale::include(double x) {
   if (x == 0.0) return;
-  int exponent = 0;
-  std::frexp(x, &exponent);  // x = f * 2^exponent, 0.5 <= |f| < 1: x is a multiple of 2^(exponent-53)
-  const long lowest = static_cast<long>(exponent) - 53;
+  const long lowest = parts_of(x).exponent;  // x is a multiple of 2^lowest (double_bits.hpp)
   if (!any_ || lowest < shift_) shift_ = lowest;
   any_ = true;
 }
@@ -27,11 +26,9 @@ void IntegerScale::assign_integer(double x, mpz_class& out) const {
     out = 0;
     return;
   }
-  int exponent = 0;
-  const double f = std::frexp(x, &exponent);
-  mpz_set_d(out.get_mpz_t(), std::ldexp(f, 53));  // exact: a 53-bit integer
-  const long up = static_cast<long>(exponent) - 53 - shift_;
-  mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(up));
+  const DoubleParts p = parts_of(x);
+  mpz_set_si(out.get_mpz_t(), static_cast<long>(p.significand));
+  mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(p.exponent - shift_));
 }
 
 int bareiss_in_place(std::vector<mpz_class>& a, int n, mpz_class& scratch) {
