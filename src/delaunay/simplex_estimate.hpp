@@ -15,12 +15,13 @@
 
 namespace drange::engine {
 
-// Simplices per point of uniform points, a little above what was measured (bench/RESULTS.md:
-// 4D 100k 30.7, 5D 20k 161, 6D 5k 834, 7D 4 500 4 955 and 7 000 5 400, 8D 300 7 385; the
-// count per point grows with n from 6D on). 2D: at most 2n - 5 triangles; 3D: about 6.8n.
+// Simplices per point of uniform points, above what was measured (bench/RESULTS.md: 4D 100k
+// 30.7, 5D 20k 161, 6D 5k 834, 7D 4 500 4 955 and 7 000 5 400, 8D 300 / 600 / 1 000 / 1 500
+// 7 385 / 12 280 / 16 600 / 20 470: from 6D on the count per point grows with n, so the
+// figure is well above the measured ones). 2D: at most 2n - 5 triangles; 3D: about 6.8n.
 // Beyond 8D nothing was measured: no room is made.
 inline std::size_t expected_simplices(int d, std::size_t n) {
-  constexpr double kPerPoint[] = {0, 0, 2, 6.8, 32, 170, 900, 5600, 8000};
+  constexpr double kPerPoint[] = {0, 0, 2, 6.8, 32, 170, 1200, 7000, 25000};
   if (d < 2 || d >= static_cast<int>(std::size(kPerPoint))) return 0;
   return static_cast<std::size_t>(kPerPoint[d] * static_cast<double>(n));
 }
