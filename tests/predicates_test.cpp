@@ -219,6 +219,8 @@ void expect_perturbation_properties(int d, const std::vector<const double*>& all
   EXPECT_NE(sign, 0);
   const std::vector<const double*> rest(all.begin() + 1, all.end());
   EXPECT_EQ(sign, reference_lifted_sign_perturbed(d, all[0], rest, ranks));
+  const Frame exact_frame{d, d, nullptr, all[0]};
+  EXPECT_EQ(geometry::exact_lifted_sign_perturbed(exact_frame, all.data() + 1, ranks.data()), sign);
   const Frame frame{d, d, nullptr, all[0]};
   const int unperturbed = geometry::lifted_sign(frame, all.data() + 1);
   if (unperturbed != 0) {

@@ -402,6 +402,8 @@ bool SearchKernel<D>::beats_candidate(std::int32_t id) {
     // (cospherical points, as in every cell of a grid), which only the perturbation breaks.
     if (candidate_exact_ && v_abs < exact_limits_[static_cast<std::size_t>(d + 2)])
       s = v != 0.0 ? (v > 0 ? 1 : -1) : sigma_ * geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data());
+    else if (candidate_clean_)  // the filter above was sound and failed: a near-tie, for GMP
+      s = sigma_ * geometry::exact_lifted_sign_perturbed(frame, rows_.data(), ranks_.data());
     else
       s = sigma_ * geometry::lifted_sign_perturbed(frame, rows_.data(), ranks_.data());
   }

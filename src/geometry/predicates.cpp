@@ -258,6 +258,11 @@ int lifted_sign(const Frame& f, const double* const* points) {
   return s ? *s : exact_lifted_sign(f, points);
 }
 
+int exact_lifted_sign_perturbed(const Frame& f, const double* const* points, const std::int64_t* ranks) {
+  const int unperturbed = exact_lifted_sign(f, points);
+  return unperturbed != 0 ? unperturbed : lifted_tie_sign(f, points, ranks);
+}
+
 int lifted_sign_perturbed(const Frame& f, const double* const* points, const std::int64_t* ranks) {
   const int unperturbed = lifted_sign(f, points);
   return unperturbed != 0 ? unperturbed : lifted_tie_sign(f, points, ranks);
