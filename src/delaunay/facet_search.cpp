@@ -216,7 +216,7 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       blocks_(points, options.use_kdtree && points.dim >= kMinBlockDimension) {
   if (points_.dyadic) {
     for (int units = 0; units <= d_ + 2; ++units)
-      exact_limits_[static_cast<std::size_t>(units)] = std::ldexp(1.0, 52 + points_.unit_exponent * units);
+      exact_limits_[static_cast<std::size_t>(units)] = geometry::power_of_two_limit(52 + points_.unit_exponent * units);
     orient_exact_limit_ = exact_limits_[static_cast<std::size_t>(d_)];
   }
 }

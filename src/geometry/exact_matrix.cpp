@@ -64,9 +64,4 @@ mpz_class bareiss_determinant(std::vector<mpz_class>& a, int n) {
   return det;
 }
 
-int bareiss_sign(std::vector<mpz_class>& a, int n) {
-  mpz_class scratch;
-  return bareiss_in_place(a, n, scratch) * sgn(a[static_cast<std::size_t>(n * n - 1)]);
-}
-
 }  // namespace drange::geometry

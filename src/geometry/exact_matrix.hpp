@@ -32,8 +32,6 @@ class IntegerScale {
 // parity (+1 or -1) of the row swaps made: the determinant is that parity times a[n*n - 1].
 int bareiss_in_place(std::vector<mpz_class>& a, int n, mpz_class& scratch);
 
-// Sign of the determinant of the n x n integer matrix a (row-major); a is destroyed.
-int bareiss_sign(std::vector<mpz_class>& a, int n);
 // The determinant itself; a is destroyed.
 mpz_class bareiss_determinant(std::vector<mpz_class>& a, int n);
 

@@ -1,7 +1,7 @@
 // geometry/predicates.hpp: exact geometric predicates on double coordinates.
 //
 // Every predicate returns the exact sign of a determinant of the input doubles: a fast
-// floating-point evaluation whose error bound is derived (see determinant.hpp), then, only when
+// floating-point evaluation whose error bound is derived (see error_bound.hpp), then, only when
 // that bound cannot decide, an exact evaluation with GMP integers. A zero never reaches the
 // algorithm where it would matter: `lifted_sign_perturbed` breaks every tie by a symbolic
 // perturbation of the lifted coordinate (Edelsbrunner and Muecke's Simulation of Simplicity,
