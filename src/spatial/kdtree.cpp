@@ -66,12 +66,29 @@ struct Item {
 template <class Item>
 int box_of(const Item* items, std::int32_t begin, std::int32_t end, double* lo, double* hi) {
   constexpr int kDim = static_cast<int>(sizeof(Item::x) / sizeof(double));
-  for (int k = 0; k < kDim; ++k) lo[k] = hi[k] = items[begin].x[k];
-  for (std::int32_t i = begin + 1; i < end; ++i)
+  // Four running boxes over interleaved items, merged at the end: each min and max waits for
+  // the previous one of its own box only, so four run at once (min and max are exact, so the
+  // box is the same).
+  constexpr int kWays = 4;
+  double l[kWays][kDim], h[kWays][kDim];
+  for (int w = 0; w < kWays; ++w)
+    for (int k = 0; k < kDim; ++k) l[w][k] = h[w][k] = items[begin].x[k];
+  std::int32_t i = begin + 1;
+  for (; i + kWays <= end; i += kWays)
+    for (int w = 0; w < kWays; ++w)
+      for (int k = 0; k < kDim; ++k) {
+        l[w][k] = std::min(l[w][k], items[i + w].x[k]);
+        h[w][k] = std::max(h[w][k], items[i + w].x[k]);
+      }
+  for (; i < end; ++i)
     for (int k = 0; k < kDim; ++k) {
-      lo[k] = std::min(lo[k], items[i].x[k]);
-      hi[k] = std::max(hi[k], items[i].x[k]);
+      l[0][k] = std::min(l[0][k], items[i].x[k]);
+      h[0][k] = std::max(h[0][k], items[i].x[k]);
     }
+  for (int k = 0; k < kDim; ++k) {
+    lo[k] = std::min(std::min(l[0][k], l[1][k]), std::min(l[2][k], l[3][k]));
+    hi[k] = std::max(std::max(h[0][k], h[1][k]), std::max(h[2][k], h[3][k]));
+  }
   int axis = 0;
   for (int k = 1; k < kDim; ++k)
     if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
