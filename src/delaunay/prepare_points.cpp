@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "delaunay/parallel_sort.hpp"
 #include "drange/errors.hpp"
 #include "geometry/error_bound.hpp"
 #include "util/for_ranges.hpp"
@@ -96,67 +97,6 @@ void mark_dyadic(const std::vector<double>& coords, PointStore& store, Team& tea
   store.dyadic = unit != std::numeric_limits<int>::max() && largest < std::ldexp(1.0, 50 + unit);
 }
 
-// Merges the sorted ranges a = [begin_a, end_a) and b = [end_a, end_b) of `values` into `out`
-// at begin_a, cut into `pieces` merges of equal output length that may run at the same time.
-// Piece p writes the outputs [k_p, k_{p+1}); it starts where the first k_p outputs took i
-// elements of a and k_p - i of b, found by binary search (`less` is a strict total order: the
-// split is unique).
-template <class T, class Less>
-void merge_piece(const std::vector<T>& values, std::size_t begin_a, std::size_t end_a, std::size_t end_b,
-                 std::vector<T>& out, std::size_t piece, std::size_t pieces, Less less) {
-  const std::size_t size_a = end_a - begin_a, size_b = end_b - end_a, total = size_a + size_b;
-  // The number of elements of a among the first k outputs.
-  auto taken_from_a = [&](std::size_t k) {
-    std::size_t low = k > size_b ? k - size_b : 0, high = std::min(k, size_a);
-    while (low < high) {  // the smallest i whose a[i] comes after b[k - i - 1]
-      const std::size_t i = low + (high - low) / 2;
-      if (less(values[begin_a + i], values[end_a + (k - i - 1)])) low = i + 1;
-      else high = i;
-    }
-    return low;
-  };
-  const std::size_t first = total * piece / pieces, last = total * (piece + 1) / pieces;
-  const std::size_t a0 = taken_from_a(first), a1 = taken_from_a(last);
-  const auto at = [&](std::size_t i) { return values.begin() + static_cast<std::ptrdiff_t>(i); };
-  std::merge(at(begin_a + a0), at(begin_a + a1), at(end_a + (first - a0)), at(end_a + (last - a1)),
-             out.begin() + static_cast<std::ptrdiff_t>(begin_a + first), less);
-}
-
-// Sorts `values` by `less`, a strict total order (so the result does not depend on how the
-// work is split): consecutive parts sorted at the same time, then merged pairwise, each merge
-// cut into pieces so that every thread has work in the last rounds too.
-template <class T, class Less>
-void sort_in_parallel(std::vector<T>& values, Less less, Team& team) {
-  constexpr std::size_t kMinPart = std::size_t{1} << 15;
-  const auto threads = static_cast<std::size_t>(team.threads());
-  const std::size_t parts = std::min(threads, values.size() / kMinPart);
-  if (parts < 2) {
-    std::sort(values.begin(), values.end(), less);
-    return;
-  }
-  std::vector<std::size_t> bounds;  // part i is [bounds[i], bounds[i + 1])
-  for (std::size_t i = 0; i <= parts; ++i) bounds.push_back(values.size() * i / parts);
-  const auto at = [](std::vector<T>& v, std::size_t i) { return v.begin() + static_cast<std::ptrdiff_t>(i); };
-  team.for_each(parts, [&](std::size_t i) { std::sort(at(values, bounds[i]), at(values, bounds[i + 1]), less); });
-  std::vector<T> merged(values.size());
-  while (bounds.size() > 2) {
-    const std::size_t merges = (bounds.size() - 1) / 2, pieces = std::max<std::size_t>(1, threads / merges);
-    team.for_each(merges * pieces, [&](std::size_t task) {
-      const std::size_t p = task / pieces;
-      merge_piece(values, bounds[2 * p], bounds[2 * p + 1], bounds[2 * p + 2], merged, task % pieces, pieces, less);
-    });
-    if ((bounds.size() - 1) % 2 == 1) {  // a lone last part is copied
-      const std::size_t from = bounds[bounds.size() - 2];
-      std::copy(at(values, from), values.end(), at(merged, from));
-    }
-    std::vector<std::size_t> next;
-    for (std::size_t i = 0; i < bounds.size(); i += 2) next.push_back(bounds[i]);
-    if (next.back() != bounds.back()) next.push_back(bounds.back());
-    bounds.swap(next);
-    values.swap(merged);
-  }
-}
-
 // The distinct points in lexicographic order: the input index of each (its position is its
 // rank) and its coordinates, rank by rank. Each exact copy goes to `duplicates` with the first
 // input index of its coordinates as the original.
@@ -172,7 +112,8 @@ DistinctPoints distinct_points(PointsView input, std::vector<Duplicate>& duplica
   std::vector<std::int64_t>& lex = distinct.index;
   lex.resize(input.n);
   std::iota(lex.begin(), lex.end(), 0);
-  sort_in_parallel(lex, [&](std::int64_t a, std::int64_t b) {
+  const auto first_coordinate = [&](std::int64_t i) { return input.point(static_cast<std::size_t>(i))[0]; };
+  sort_by_key(lex, first_coordinate, [&](std::int64_t a, std::int64_t b) {
     const double* p = input.point(static_cast<std::size_t>(a));
     const double* q = input.point(static_cast<std::size_t>(b));
     for (int k = 0; k < d; ++k)
@@ -214,7 +155,7 @@ DistinctPoints distinct_points_fixed(PointsView input, std::vector<Duplicate>& d
       items[i].index = static_cast<std::int64_t>(i);
     }
   });
-  sort_in_parallel(items, [](const Item& a, const Item& b) {
+  sort_by_key(items, [](const Item& item) { return item.x[0]; }, [](const Item& a, const Item& b) {
     for (int k = 0; k < D; ++k)
       if (a.x[k] != b.x[k]) return a.x[k] < b.x[k];
     return a.index < b.index;
