@@ -143,15 +143,14 @@ void sort_by_key(std::vector<T>& values, Key key, Less less, Team& team) {
   std::size_t offset = 0, largest = 0;
   for (std::size_t b = 0; b < buckets; ++b) {
     bucket_begin[b] = offset;
-    if (b > 0) largest = std::max(largest, offset - bucket_begin[b - 1]);
     for (Part& p : part) {
       const std::size_t count = p.count[b];
       p.count[b] = offset;  // from now on: where the part's next item of bucket b goes
       offset += count;
     }
+    largest = std::max(largest, offset - bucket_begin[b]);
   }
   bucket_begin[buckets] = n;
-  largest = std::max(largest, n - bucket_begin[buckets - 1]);
   if (largest > n / 8) {  // clustered keys: a few large buckets, each sorted by one thread
     sort_in_parallel(values, less, team);
     return;
