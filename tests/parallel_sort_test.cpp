@@ -1,4 +1,4 @@
-// tests/parallel_sort_test.cpp: delaunay/parallel_sort.hpp against std::sort. Both sorts take a
+// tests/parallel_sort_test.cpp: util/parallel_sort.hpp against std::sort. Both sorts take a
 // strict total order, so each must give std::sort's result exactly, for every thread count and
 // whichever way sort_by_key goes: by its buckets (spread-out keys, many equal keys, signed
 // zeros) or back to sort_in_parallel (keys all equal, clustered, or too far apart for a
@@ -11,8 +11,8 @@
 #include <random>
 #include <vector>
 
-#include "delaunay/parallel_sort.hpp"
 #include "delaunay/team.hpp"
+#include "util/parallel_sort.hpp"
 
 namespace {
 
@@ -44,10 +44,10 @@ void expect_sorted_like_std(const std::vector<double>& keys, const char* what) {
   for (int threads = 1; threads <= 3; ++threads) {
     drange::engine::Team team(threads);
     std::vector<Item> by_key = items_of(keys, 7);
-    drange::engine::sort_by_key(by_key, [](const Item& item) { return item.key; }, less, team);
+    drange::util::sort_by_key(by_key, [](const Item& item) { return item.key; }, less, team);
     EXPECT_TRUE(by_key == expected) << what << ", sort_by_key, " << threads << " threads";
     std::vector<Item> merged = items_of(keys, 7);
-    drange::engine::sort_in_parallel(merged, less, team);
+    drange::util::sort_in_parallel(merged, less, team);
     EXPECT_TRUE(merged == expected) << what << ", sort_in_parallel, " << threads << " threads";
   }
 }

@@ -8,15 +8,16 @@
 #include <string>
 #include <utility>
 
-#include "delaunay/parallel_sort.hpp"
 #include "drange/errors.hpp"
 #include "geometry/error_bound.hpp"
 #include "util/for_ranges.hpp"
+#include "util/parallel_sort.hpp"
 
 namespace drange::engine {
 
 namespace {
 using util::for_ranges;
+using util::sort_by_key;
 constexpr int kMaxDimension = 11;  // the filters' Laplace tables (geometry/minors.hpp) reach d+1 = 12 columns
 
 void check_input(PointsView input) {

@@ -176,11 +176,12 @@ class SearchPipeline {
   // 4D 100k 2.667 -> 2.663 s; 5D 20k 5.26 -> 5.39 s (wasted 183 000 -> 285 000).
   void lead(Worker& worker, SearchTotals& totals) {
     std::uint64_t turn = 0;
-    std::uint64_t run_end = 0;  // the end of the run that holds `turn`, once known
-    refill(turn);
-    // Whether the whole run that holds `turn` is decided. Runs tile the facets claimed so far,
-    // so a turn past the known run starts the next one, whose claimer records its end.
+    std::uint64_t run_end = 0;                 // the end of the run that holds `turn`, once known
     std::uint64_t own_begin = 0, own_end = 0;  // the last run this thread claimed
+    refill(turn);
+    // Whether `turn` may be taken: with whole_runs_, whether the run that holds it is decided.
+    // Runs tile the facets claimed so far, so a turn past the known run starts the next one,
+    // whose claimer records its end.
     auto run_done = [&] {
       if (!whole_runs_) return done(turn);
       if (turn >= own_begin && turn < own_end) {  // its own run: no other core writes there

@@ -86,8 +86,12 @@ int box_of(const Item* items, std::int32_t begin, std::int32_t end, double* lo, 
       h[0][k] = std::max(h[0][k], items[i].x[k]);
     }
   for (int k = 0; k < kDim; ++k) {
-    lo[k] = std::min(std::min(l[0][k], l[1][k]), std::min(l[2][k], l[3][k]));
-    hi[k] = std::max(std::max(h[0][k], h[1][k]), std::max(h[2][k], h[3][k]));
+    lo[k] = l[0][k];
+    hi[k] = h[0][k];
+    for (int w = 1; w < kWays; ++w) {
+      lo[k] = std::min(lo[k], l[w][k]);
+      hi[k] = std::max(hi[k], h[w][k]);
+    }
   }
   int axis = 0;
   for (int k = 1; k < kDim; ++k)

@@ -1,5 +1,5 @@
-// delaunay/parallel_sort.hpp: sorting on a Team's threads, for prepare_points.cpp (the
-// lexicographic order of the points). Both sorts take a strict total order, so their result is
+// util/parallel_sort.hpp: sorting on a Team's threads (prepare_points.cpp: the lexicographic
+// order of the points). Both sorts take a strict total order, so their result is
 // unique: it depends neither on the thread count nor on the algorithm.
 //
 //   sort_in_parallel   any order: parts sorted at the same time, then merged pairwise.
@@ -12,15 +12,13 @@
 #pragma once
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <limits>
 #include <vector>
 
 #include "delaunay/team.hpp"
 
-namespace drange::engine {
+namespace drange::util {
 
 // Merges the sorted ranges a = [begin_a, end_a) and b = [end_a, end_b) of `values` into `out`
 // at begin_a, cut into `pieces` merges of equal output length that may run at the same time.
@@ -52,7 +50,7 @@ void merge_piece(const std::vector<T>& values, std::size_t begin_a, std::size_t 
 // then merged pairwise, each merge cut into pieces so that every thread has work in the last
 // rounds too.
 template <class T, class Less>
-void sort_in_parallel(std::vector<T>& values, Less less, Team& team) {
+void sort_in_parallel(std::vector<T>& values, Less less, engine::Team& team) {
   constexpr std::size_t kMinPart = std::size_t{1} << 15;
   const auto threads = static_cast<std::size_t>(team.threads());
   const std::size_t parts = std::min(threads, values.size() / kMinPart);
@@ -90,7 +88,7 @@ void sort_in_parallel(std::vector<T>& values, Less less, Team& team) {
 // and sorted as sort_in_parallel would, so no input is slower than that by much; keys too
 // spread out for a finite scale (or all equal) go to sort_in_parallel directly.
 template <class T, class Key, class Less>
-void sort_by_key(std::vector<T>& values, Key key, Less less, Team& team) {
+void sort_by_key(std::vector<T>& values, Key key, Less less, engine::Team& team) {
   constexpr std::size_t kPerBucket = 16;   // items per bucket on evenly spread keys
   constexpr std::size_t kMinItems = 4096;  // below, one std::sort is as fast
   const std::size_t n = values.size();
@@ -177,4 +175,4 @@ void sort_by_key(std::vector<T>& values, Key key, Less less, Team& team) {
   values.swap(sorted);
 }
 
-}  // namespace drange::engine
+}  // namespace drange::util
