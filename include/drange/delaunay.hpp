@@ -42,14 +42,18 @@ struct SearchOptions {
   // Query the candidate's ball itself (enlarged by its error bound), not only its bounding box
   // (2.4 approximates the sphere by a hypercube, "the rougher the larger d is").
   bool ball_query = true;
+  // On points near one sphere (cospherical up to rounding), also skip the kd-tree nodes whose
+  // points' distances from the sphere's centre prove them outside the candidate's sphere,
+  // where the ball cannot (every candidate's sphere is then the input sphere, within rounding).
+  bool sphere_shell = true;
   // Which open facet is searched next (ours too: it changes the simplices' order, not the set).
   FacetOrder facet_order = FacetOrder::automatic;
 };
 
 // Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order",
 // "paper" (the paper's three steps and nothing else, FIFO order), "no-bottom-up", "no-seed",
-// "no-ball", "fifo" (full with the paper's FIFO facet order in every dimension), "spatial"
-// (full with the spatial facet order in every dimension).
+// "no-ball", "no-shell", "fifo" (full with the paper's FIFO facet order in every dimension),
+// "spatial" (full with the spatial facet order in every dimension).
 // Throws UsageError naming the unknown value.
 SearchOptions search_variant(const std::string& name);
 // The names accepted by search_variant, for help texts.

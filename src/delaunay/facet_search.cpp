@@ -149,6 +149,12 @@ class SearchKernel final : public FacetSearch::Kernel {
   bool on_open_side(std::int32_t id);
   bool beats_candidate(std::int32_t id);
   void reset_box();
+  // SphereShell (sphere_shell.hpp): the candidate's form around the shell's centre, and the
+  // tests that use it: a point's sign of sigma I(p, x) (0 when undecided), and a node's proof
+  // that none of its points beats the candidate.
+  void set_shell_form();
+  int shell_sign(std::int32_t id) const;
+  bool shell_prunes(std::int32_t node) const;
   // The sign of sigma O over the computed value, when certified or proved exact; else 0.
   int orientation_sign(double value, double abs_tree) const;
 
@@ -195,6 +201,16 @@ class SearchKernel final : public FacetSearch::Kernel {
   std::array<double, kMaxRow> lower_{}, upper_{};  // the query box
   bool ball_ = false;                          // also query the ball: |x - centre|^2 <= ball_reach2_
   double ball_reach2_ = 0.0;
+  // With y = x - g (g the shell's centre), sigma I(p, x) = b . y + lift (|x - g|^2 - rho) +
+  // constant exactly, for the exact coefficients (geometry::exact_lifted_form); these are
+  // them truncated to doubles (relative error below 2u), sigma folded in.
+  const SphereShell* shell_ = nullptr;  // the points' shell, when active and asked for
+  bool shell_form_ = false;             // the candidate's form is computed
+  std::array<double, kMaxRow> shell_b_{};
+  double shell_lift_ = 0.0, shell_constant_ = 0.0;
+  double shell_eta_term_ = 0.0;  // |lift| times the error bound of the points' offsets, with margin
+  // Error bound factors of shell_sign and shell_prunes (see there).
+  double shell_point_gamma_ = 0.0, shell_node_gamma_ = 0.0;
 
   // Per point (scratch).
   std::array<double, kMaxRow> row_{};
@@ -214,6 +230,9 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       minors_(points.dim + 1),
       seeds_(seeds),
       blocks_(points, options.use_kdtree && points.dim >= kMinBlockDimension) {
+  if (options.use_kdtree && options.sphere_shell && points.shell.active()) shell_ = &points.shell;
+  shell_point_gamma_ = geometry::gamma_bound(d_ + 7);
+  shell_node_gamma_ = geometry::gamma_bound(d_ + 8);
   if (points_.dyadic) {
     for (int units = 0; units <= d_ + 2; ++units)
       exact_limits_[static_cast<std::size_t>(units)] = geometry::power_of_two_limit(52 + points_.unit_exponent * units);
@@ -322,6 +341,7 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
   candidate_exact_ = lifted_exact_ && candidate_clean_;
   for (int j = 0; candidate_exact_ && j <= d; ++j)
     candidate_exact_ = w_abs_[static_cast<std::size_t>(j)] < exact_limits_[static_cast<std::size_t>(j < d ? d + 1 : d)];
+  if (shell_ != nullptr) set_shell_form();
   const double gamma = lifted_gamma_;
   const double wd = w_[static_cast<std::size_t>(d)];
   const double ewd = gamma * w_abs_[static_cast<std::size_t>(d)];
@@ -361,6 +381,74 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
 }
 
 template <int D>
+void SearchKernel<D>::set_shell_form() {
+  const int d = dim();
+  const geometry::Frame frame{d, d, nullptr, f0_};
+  shell_form_ = geometry::exact_lifted_form(frame, rows_.data(), shell_->centre.data(), shell_->rho, shell_b_.data(),
+                                            &shell_lift_, &shell_constant_);
+  if (!shell_form_) return;
+  for (int k = 0; k < d; ++k) shell_b_[static_cast<std::size_t>(k)] *= sigma_;
+  shell_lift_ *= sigma_;
+  shell_constant_ *= sigma_;
+  shell_eta_term_ = 1.01 * std::fabs(shell_lift_) * shell_->eta;
+}
+
+template <int D>
+int SearchKernel<D>::shell_sign(std::int32_t id) const {
+  // v = constant + b . fl(x - g) + lift s_x in floating point (s_x: the stored offset). With B,
+  // W, K the exact coefficients and S_x the exact offset, sigma I = B . y + W S_x + K, and
+  //   |v - sigma I| <= gamma(d + 3) A    (the roundings of fl(x - g), the products, the sums)
+  //                  + 2.01 u A          (the coefficients' truncation)
+  //                  + |W| (u |s_x| + eta)  (the offset's error: u A and shell_eta_term_)
+  // with A = |constant| + sum |b_k| |fl(x_k - g_k)| + |lift| |s_x|: shell_point_gamma_ =
+  // gamma_bound(d + 7) covers the A terms. An underflow costs at most 2^-1074 per operation.
+  const int d = dim();
+  const double* x = points_.point(id);
+  const double* g = shell_->centre.data();
+  const double offset = shell_->offset[static_cast<std::size_t>(id)];
+  double v = shell_constant_, a = std::fabs(shell_constant_);
+  for (int k = 0; k < d; ++k) {
+    const double y = x[k] - g[k];
+    v += shell_b_[static_cast<std::size_t>(k)] * y;
+    a += std::fabs(shell_b_[static_cast<std::size_t>(k)]) * std::fabs(y);
+  }
+  v += shell_lift_ * offset;
+  a += std::fabs(shell_lift_) * std::fabs(offset);
+  if (!(a < geometry::kFilterOverflow)) return 0;  // also NaN
+  const double bound = shell_point_gamma_ * a + shell_eta_term_ + 0x1p-1000;
+  if (v > bound) return 1;
+  if (v < -bound) return -1;
+  return 0;
+}
+
+template <int D>
+bool SearchKernel<D>::shell_prunes(std::int32_t node) const {
+  // Every point x of the node has sigma I(p, x) > 0 (it is outside the candidate's sphere, so
+  // it cannot win, now or later) when a lower bound of it over the node is positive. With the
+  // exact form sigma I = B . y + W S_x + K (shell_sign), y in the node's box less g and S_x in
+  // the node's range (sphere_shell.cpp: bounds of the exact offsets), sigma I is at least the
+  // sum of each term's minimum. That sum is evaluated in floating point: within
+  // gamma(d + 3) a of its exact value on the truncated coefficients, and within 2.01 u a of
+  // the exact coefficients' (a: its absolute tree), which shell_node_gamma_ covers.
+  const int d = dim();
+  const double* lo = points_.tree.template lower<D>(node);
+  const double* hi = points_.tree.template upper<D>(node);
+  const double* g = shell_->centre.data();
+  const double* range = shell_->of(node);
+  double low = shell_constant_, a = std::fabs(shell_constant_);
+  for (int k = 0; k < d; ++k) {
+    const double b = shell_b_[static_cast<std::size_t>(k)];
+    const double ylo = lo[k] - g[k], yhi = hi[k] - g[k];
+    low += std::min(b * ylo, b * yhi);
+    a += std::fabs(b) * std::max(std::fabs(ylo), std::fabs(yhi));
+  }
+  low += std::min(shell_lift_ * range[0], shell_lift_ * range[1]);
+  a += std::fabs(shell_lift_) * std::max(std::fabs(range[0]), std::fabs(range[1]));
+  if (!(a < geometry::kFilterOverflow)) return false;  // also NaN
+  return low > shell_node_gamma_ * a + 0x1p-1000;
+}
+
+template <int D>
 int SearchKernel<D>::orientation_sign(double value, double abs_tree) const {
   const int s = facet_clean_ ? certified_sign_with(value, abs_tree, orient_gamma_) : 0;
   if (s != 0 || !orientation_exact_ || !(abs_tree < orient_exact_limit_)) return s;
@@ -394,6 +482,7 @@ bool SearchKernel<D>::beats_candidate(std::int32_t id) {
     v_abs += w_abs_[static_cast<std::size_t>(k)] * std::fabs(row_[static_cast<std::size_t>(k)]);
   }
   int s = candidate_clean_ ? certified_sign_with(v, v_abs, lifted_gamma_) : 0;
+  if (s == 0 && shell_form_) s = shell_sign(id);
   if (s == 0) {
     rows_[static_cast<std::size_t>(d)] = points_.point(id);
     ranks_[static_cast<std::size_t>(d + 1)] = points_.rank[static_cast<std::size_t>(id)];
@@ -628,6 +717,7 @@ bool SearchKernel<D>::prune(std::int32_t node) const {
     for (k = 1; k < d; ++k) distance2 += squares[static_cast<std::size_t>(k)];
     if (distance2 > ball_reach2_) return true;
   }
+  if (shell_form_ && shell_prunes(node)) return true;
   // Within the candidate's ball, the closed side is a thin cap of its sphere, inside the empty
   // sphere of the simplex already found there: nodes wholly on the closed side that meet the
   // ball are rare and hold few points, and testing for them costs more than scanning them
@@ -653,6 +743,7 @@ std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, Se
   counters_ = &counters;
   set_facet(facet, sigma);
   candidate_ = -1;
+  shell_form_ = false;
   reset_box();
   if (options_.seed_candidate) {
     for (int i = 0; i < d; ++i)

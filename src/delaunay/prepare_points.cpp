@@ -208,6 +208,7 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   mark_dyadic(by_rank, store, team);
   store.tree.build_and_reorder(by_rank.data(), store.size, d, leaf_size, team.threads());
   store.coords = std::move(by_rank);  // now in tree order
+  store.shell = fit_sphere_shell(store.coords.data(), store.size, d, store.tree);
   const std::vector<std::int32_t>& order = store.tree.order();
   store.rank.resize(kept);
   store.input_index.resize(kept);

@@ -258,6 +258,97 @@ int lifted_sign(const Frame& f, const double* const* points) {
   return s ? *s : exact_lifted_sign(f, points);
 }
 
+namespace {
+// z 2^unit_exponent truncated to a double; false when not zero and outside the normal range.
+bool truncated_double(const mpz_class& z, long unit_exponent, double& out) {
+  if (sgn(z) == 0) {
+    out = 0.0;
+    return true;
+  }
+  long exponent = 0;
+  const double mantissa = mpz_get_d_2exp(&exponent, z.get_mpz_t());  // |mantissa| in [0.5, 1), truncated
+  const long e = exponent + unit_exponent;
+  if (e > 1023 || e < -1021) return false;
+  out = std::ldexp(mantissa, static_cast<int>(e));
+  return true;
+}
+}  // namespace
+
+bool exact_lifted_form(const Frame& f, const double* const* points, const double* g, double rho, double* b,
+                       double* lift, double* constant) {
+  const int k = f.k;
+  if (k != f.dim || f.axes != nullptr) return false;
+  // One scale for everything: every coordinate, g and rho are integer multiples of 2^shift.
+  IntegerScale scale = scale_of(f.dim, f.base, points, k);
+  for (int c = 0; c < k; ++c) scale.include(g[c]);
+  scale.include(rho);
+  const long unit = scale.shift();
+  ExactScratch& x = exact_scratch();
+  x.base.resize(static_cast<std::size_t>(k));
+  x.delta.resize(static_cast<std::size_t>(k));
+  // The integer lifted rows (spatial entries in units of 2^unit, the lift in 2^(2 unit)), and
+  // the cofactors of the last row: C_j = (-1)^(k + j) times the minor without column j, in
+  // units of 2^(unit (k + 1)) for j < k and 2^(unit k) for the lift column.
+  thread_local std::vector<mpz_class> rows, cofactor, e;
+  thread_local mpz_class term, sum, rho_lift;
+  rows.resize(static_cast<std::size_t>(k * (k + 1)));
+  cofactor.resize(static_cast<std::size_t>(k + 1));
+  e.resize(static_cast<std::size_t>(k));
+  x.matrix.resize(static_cast<std::size_t>(k * k));
+  for (int c = 0; c < k; ++c) scale.assign_integer(f.base[c], x.base[static_cast<std::size_t>(c)]);
+  for (int r = 0; r < k; ++r) {
+    x.lift = 0;
+    for (int c = 0; c < k; ++c) {
+      mpz_class& delta = rows[static_cast<std::size_t>(r * (k + 1) + c)];
+      scale.assign_integer(points[r][c], delta);
+      delta -= x.base[static_cast<std::size_t>(c)];
+      mpz_mul(x.square.get_mpz_t(), delta.get_mpz_t(), delta.get_mpz_t());
+      x.lift += x.square;
+    }
+    rows[static_cast<std::size_t>(r * (k + 1) + k)] = x.lift;
+  }
+  for (int j = 0; j <= k; ++j) {
+    for (int r = 0; r < k; ++r)
+      for (int c = 0, out = 0; c <= k; ++c)
+        if (c != j) x.matrix[static_cast<std::size_t>(r * k + out++)] = rows[static_cast<std::size_t>(r * (k + 1) + c)];
+    const int parity = bareiss_in_place(x.matrix, k, x.pivot);
+    mpz_class& cj = cofactor[static_cast<std::size_t>(j)];
+    if (parity == 0) {
+      cj = 0;
+    } else {
+      cj = x.matrix[static_cast<std::size_t>(k * k - 1)];
+      if ((parity < 0) != (((k + j) & 1) != 0)) cj = -cj;
+    }
+  }
+  // e = base - g (units 2^unit); rho in lift units 2^(2 unit): rho = m 2^p with p >= unit.
+  for (int c = 0; c < k; ++c) {
+    scale.assign_integer(g[c], term);
+    e[static_cast<std::size_t>(c)] = x.base[static_cast<std::size_t>(c)] - term;
+  }
+  scale.assign_integer(rho, rho_lift);  // rho / 2^unit
+  if (unit > 0) return false;           // not an integer in lift units (never for scaled points)
+  mpz_mul_2exp(rho_lift.get_mpz_t(), rho_lift.get_mpz_t(), static_cast<mp_bitcnt_t>(-unit));
+  // With y = x - g: |x - base|^2 = |y|^2 - 2 e . y + |e|^2, so
+  //   det = sum_c (C_c - 2 C_k e_c) y_c + C_k (|y|^2 - rho) + C_k (rho + |e|^2) - sum_c C_c e_c.
+  const mpz_class& ck = cofactor[static_cast<std::size_t>(k)];
+  sum = rho_lift;
+  for (int c = 0; c < k; ++c) {
+    const mpz_class& ec = e[static_cast<std::size_t>(c)];
+    term = ck * ec;
+    term *= 2;
+    term = cofactor[static_cast<std::size_t>(c)] - term;  // units 2^(unit (k + 1))
+    if (!truncated_double(term, unit * (k + 1), b[c])) return false;
+    term = ec * ec;
+    sum += term;
+  }
+  term = ck * sum;  // units 2^(unit (k + 2))
+  for (int c = 0; c < k; ++c) {
+    sum = cofactor[static_cast<std::size_t>(c)] * e[static_cast<std::size_t>(c)];
+    term -= sum;
+  }
+  return truncated_double(term, unit * (k + 2), *constant) && truncated_double(ck, unit * k, *lift);
+}
+
 int exact_lifted_sign_perturbed(const Frame& f, const double* const* points, const std::int64_t* ranks) {
   const int unperturbed = exact_lifted_sign(f, points);
   return unperturbed != 0 ? unperturbed : lifted_tie_sign(f, points, ranks);

@@ -49,6 +49,18 @@ int lifted_tie_sign(const Frame& frame, const double* const* points, const std::
 // would not decide either (2 000 points on a sphere: not once in 1.26M evaluations).
 int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points, const std::int64_t* ranks);
 
+// The lifted determinant det[r_1; ...; r_k; r_x] (frame.k == frame.dim, rows relative to
+// frame.base as in lifted_sign) as a function of its last point x, written around a centre g
+// and a constant rho:
+//   det = b . (x - g) + lift (|x - g|^2 - rho) + constant,
+// an identity for any g and rho. The coefficients are computed exactly, then each truncated to
+// a double (within a relative 2^-52 of the exact value; zero exactly). For points near the
+// sphere |x - g|^2 = rho every term is small, so a filter of this form decides what the
+// Laplace form, with its large cancelling terms, cannot (facet_search.cpp, sphere_shell.hpp).
+// False, outputs unspecified, when a nonzero coefficient is outside the normal range.
+bool exact_lifted_form(const Frame& frame, const double* const* points, const double* g, double rho, double* b,
+                       double* lift, double* constant);
+
 // Convenience for full-dimensional simplices (frame = all axes, base = simplex[0]):
 // sign of det[s_1 - s_0, ..., s_d - s_0].
 int simplex_orientation(int dim, const double* const* simplex);

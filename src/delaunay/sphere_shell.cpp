@@ -1,0 +1,210 @@
+// delaunay/sphere_shell.cpp: the sphere fit and the nodes' ranges of |x - g|^2.
+#include "delaunay/sphere_shell.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geometry/error_bound.hpp"
+#include "spatial/kdtree.hpp"
+
+namespace drange::engine {
+
+namespace {
+
+// A point is near the sphere when | |x - g|^2 - R^2 | <= kNear R^2: far looser than rounding,
+// so that points a little off a sphere (measured, then normalised in single precision) count.
+constexpr double kNear = 0x1p-10;
+constexpr double kInlierShare = 0.9;
+constexpr std::int32_t kSample = 4096;
+
+struct Sphere {
+  std::vector<double> centre;
+  double radius2 = 0.0;
+};
+
+// Solves the m x m system a z = b (row-major, both overwritten) by Gaussian elimination with
+// partial pivoting; the solution is left in b. False when a pivot is zero or not finite.
+bool solve(std::vector<double>& a, std::vector<double>& b, int m) {
+  for (int col = 0; col < m; ++col) {
+    int pivot = col;
+    for (int r = col + 1; r < m; ++r)
+      if (std::fabs(a[static_cast<std::size_t>(r * m + col)]) > std::fabs(a[static_cast<std::size_t>(pivot * m + col)])) pivot = r;
+    const double p = a[static_cast<std::size_t>(pivot * m + col)];
+    if (!(std::fabs(p) > 0.0) || !std::isfinite(p)) return false;
+    if (pivot != col) {
+      for (int c = 0; c < m; ++c) std::swap(a[static_cast<std::size_t>(pivot * m + c)], a[static_cast<std::size_t>(col * m + c)]);
+      std::swap(b[static_cast<std::size_t>(pivot)], b[static_cast<std::size_t>(col)]);
+    }
+    for (int r = col + 1; r < m; ++r) {
+      const double f = a[static_cast<std::size_t>(r * m + col)] / p;
+      for (int c = col; c < m; ++c) a[static_cast<std::size_t>(r * m + c)] -= f * a[static_cast<std::size_t>(col * m + c)];
+      b[static_cast<std::size_t>(r)] -= f * b[static_cast<std::size_t>(col)];
+    }
+  }
+  for (int r = m - 1; r >= 0; --r) {
+    double s = b[static_cast<std::size_t>(r)];
+    for (int c = r + 1; c < m; ++c) s -= a[static_cast<std::size_t>(r * m + c)] * b[static_cast<std::size_t>(c)];
+    b[static_cast<std::size_t>(r)] = s / a[static_cast<std::size_t>(r * m + r)];
+  }
+  for (int r = 0; r < m; ++r)
+    if (!std::isfinite(b[static_cast<std::size_t>(r)])) return false;
+  return true;
+}
+
+// The algebraic least-squares sphere of the points `ids`: |y|^2 = 2 c . y + k with y = x - m
+// (m their mean, which keeps the normal equations well scaled), then one step of refinement
+// on the residuals. False when the system is singular (points in a hyperplane).
+bool fit(const double* coords, int dim, const std::vector<std::int32_t>& ids, Sphere& sphere) {
+  if (ids.size() < static_cast<std::size_t>(dim + 2)) return false;
+  const auto point = [&](std::int32_t id) { return coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim); };
+  std::vector<double> mean(static_cast<std::size_t>(dim), 0.0);
+  for (std::int32_t id : ids)
+    for (int k = 0; k < dim; ++k) mean[static_cast<std::size_t>(k)] += point(id)[k];
+  for (double& v : mean) v /= static_cast<double>(ids.size());
+
+  const int m = dim + 1;
+  std::vector<double> normal(static_cast<std::size_t>(m * m)), z(static_cast<std::size_t>(m));
+  // The normal equations' right-hand side for the residual of (c, k): the first pass with
+  // c = 0, k = 0, the refinement with the first solution.
+  std::vector<double> solution(static_cast<std::size_t>(m), 0.0);
+  for (int pass = 0; pass < 2; ++pass) {
+    std::fill(normal.begin(), normal.end(), 0.0);
+    std::vector<double> rhs(static_cast<std::size_t>(m), 0.0);
+    for (std::int32_t id : ids) {
+      double norm2 = 0.0, predicted = solution[static_cast<std::size_t>(dim)];
+      for (int k = 0; k < dim; ++k) {
+        const double y = point(id)[k] - mean[static_cast<std::size_t>(k)];
+        z[static_cast<std::size_t>(k)] = 2 * y;
+        norm2 += y * y;
+        predicted += 2 * y * solution[static_cast<std::size_t>(k)];
+      }
+      z[static_cast<std::size_t>(dim)] = 1.0;
+      const double residual = norm2 - predicted;
+      for (int r = 0; r < m; ++r) {
+        rhs[static_cast<std::size_t>(r)] += z[static_cast<std::size_t>(r)] * residual;
+        for (int c = 0; c < m; ++c) normal[static_cast<std::size_t>(r * m + c)] += z[static_cast<std::size_t>(r)] * z[static_cast<std::size_t>(c)];
+      }
+    }
+    if (!solve(normal, rhs, m)) return false;
+    for (int r = 0; r < m; ++r) solution[static_cast<std::size_t>(r)] += rhs[static_cast<std::size_t>(r)];
+  }
+  sphere.centre.assign(static_cast<std::size_t>(dim), 0.0);
+  double c2 = 0.0;
+  for (int k = 0; k < dim; ++k) {
+    sphere.centre[static_cast<std::size_t>(k)] = mean[static_cast<std::size_t>(k)] + solution[static_cast<std::size_t>(k)];
+    c2 += solution[static_cast<std::size_t>(k)] * solution[static_cast<std::size_t>(k)];
+  }
+  sphere.radius2 = solution[static_cast<std::size_t>(dim)] + c2;
+  return std::isfinite(sphere.radius2) && sphere.radius2 > 0.0;
+}
+
+double distance2(const double* x, const std::vector<double>& g) {
+  double t = 0.0;
+  for (std::size_t k = 0; k < g.size(); ++k) t += (x[k] - g[k]) * (x[k] - g[k]);
+  return t;
+}
+
+// The ids among `ids` near the sphere.
+std::vector<std::int32_t> near(const double* coords, int dim, const std::vector<std::int32_t>& ids, const Sphere& sphere) {
+  std::vector<std::int32_t> kept;
+  kept.reserve(ids.size());
+  for (std::int32_t id : ids)
+    if (std::fabs(distance2(coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim), sphere.centre) - sphere.radius2) <=
+        kNear * sphere.radius2)
+      kept.push_back(id);
+  return kept;
+}
+
+// a + b - s exactly, for s = fl(a + b) (Knuth's two-sum).
+double two_sum_error(double a, double b, double s) {
+  const double b_part = s - a;
+  return (a - (s - b_part)) + (b - b_part);
+}
+
+bool mostly(std::size_t part, std::size_t whole) { return static_cast<double>(part) >= kInlierShare * static_cast<double>(whole); }
+
+}  // namespace
+
+double sphere_offset(const double* x, const double* g, int dim, double rho, double& bound) {
+  // Double-double: x_k - g_k = h + l exactly (two-sum); h^2 = p + q exactly (fma); the p are
+  // added to -rho with two-sum (exact: hi plus the errors), the rest (errors, q, 2 h l) to lo.
+  // With M = max(rho, sum of p), each partial sum of hi is at most 2M, so each two-sum error is
+  // at most 2uM, each q at most uM, each 2 h l at most 2.01uM, and |lo| <= 2.02 (d + 3) uM.
+  // Dropped or rounded: the l^2 and the roundings of 2 h l (3 u^2 M in all), and the 3d
+  // additions to lo (each <= u |lo|): less than (6.1 d (d + 3) + 3) u^2 M, which
+  // offset_error(dim) * M exceeds. The final hi + lo rounds by u |result|.
+  double hi = -rho, lo = 0.0, total = 0.0;
+  for (int k = 0; k < dim; ++k) {
+    const double h = x[k] - g[k];
+    const double l = two_sum_error(x[k], -g[k], h);
+    const double p = h * h;
+    const double q = std::fma(h, h, -p);
+    const double sum = hi + p;
+    lo += two_sum_error(hi, p, sum);
+    hi = sum;
+    lo += q;
+    lo += 2 * h * l;
+    total += p;
+  }
+  bound = std::max(rho, total);
+  return hi + lo;
+}
+
+double offset_error(int dim) { return 4.0 * (3 * dim * (dim + 4) + 3) * geometry::kUnitRoundoff * geometry::kUnitRoundoff; }
+
+SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree) {
+  SphereShell shell;
+  // A sample first: most inputs are not near a sphere, and this costs them a few thousand points.
+  std::vector<std::int32_t> ids;
+  const std::int32_t stride = std::max<std::int32_t>(1, n / kSample);
+  for (std::int32_t id = 0; id < n; id += stride) ids.push_back(id);
+  Sphere sphere;
+  if (!fit(coords, dim, ids, sphere) || !mostly(near(coords, dim, ids, sphere).size(), ids.size())) return shell;
+  // Then all the points, and again without those far from the sphere (a centre point, say,
+  // would pull the fit off by its distance over n: far more than rounding).
+  ids.resize(static_cast<std::size_t>(n));
+  for (std::int32_t id = 0; id < n; ++id) ids[static_cast<std::size_t>(id)] = id;
+  if (!fit(coords, dim, ids, sphere)) return shell;
+  ids = near(coords, dim, ids, sphere);
+  if (!mostly(ids.size(), static_cast<std::size_t>(n)) || !fit(coords, dim, ids, sphere)) return shell;
+
+  // The points' offsets, then the nodes' ranges, leaves first (children follow their parent in
+  // preorder). An exact offset is within u |s| + eta of the computed s.
+  const auto& nodes = tree.nodes();
+  shell.rho = sphere.radius2;
+  shell.offset.resize(static_cast<std::size_t>(n));
+  double largest = shell.rho;
+  for (std::int32_t id = 0; id < n; ++id) {
+    double bound = 0.0;
+    shell.offset[static_cast<std::size_t>(id)] =
+        sphere_offset(coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim), sphere.centre.data(), dim, shell.rho, bound);
+    largest = std::max(largest, bound);
+  }
+  shell.eta = offset_error(dim) * largest;
+  if (!std::isfinite(shell.eta)) return SphereShell{};
+  shell.range.resize(2 * nodes.size());
+  for (std::size_t i = nodes.size(); i-- > 0;) {
+    const spatial::KdTree::Node& node = nodes[i];
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    if (node.right < 0) {
+      for (std::int32_t id = node.begin; id < node.end; ++id) {
+        // Twice the bound: the subtraction and addition here round by at most u of their
+        // results, which the second u |s| and eta cover.
+        const double s = shell.offset[static_cast<std::size_t>(id)];
+        lo = std::min(lo, s - 2 * geometry::kUnitRoundoff * std::fabs(s) - 2 * shell.eta);
+        hi = std::max(hi, s + 2 * geometry::kUnitRoundoff * std::fabs(s) + 2 * shell.eta);
+      }
+    } else {
+      const std::size_t left = i + 1, right = static_cast<std::size_t>(node.right);
+      lo = std::min(shell.range[2 * left], shell.range[2 * right]);
+      hi = std::max(shell.range[2 * left + 1], shell.range[2 * right + 1]);
+    }
+    shell.range[2 * i] = lo;
+    shell.range[2 * i + 1] = hi;
+  }
+  shell.centre = std::move(sphere.centre);
+  return shell;
+}
+
+}  // namespace drange::engine

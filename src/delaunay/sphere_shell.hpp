@@ -1,0 +1,59 @@
+// delaunay/sphere_shell.hpp: for points that lie near one sphere, the range of their lifted
+// coordinate |x - g|^2 in every kd-tree node (our step, SearchOptions::sphere_shell).
+//
+// Why: on (nearly) cospherical input, every candidate's sphere is within rounding of the input
+// sphere, so its ball meets every kd-tree node near that sphere and the search scans nearly
+// all the points, for every facet (quadratic: 20 000 points on a circle took 1.3 s, CGAL 9 ms).
+// But the search's test, sigma I(p, x), is linear in (x, |x - g|^2) for any fixed g; with g the
+// input sphere's centre, a node's points have |x - g|^2 in a range as thin as their distance
+// from that sphere, and the minimum of the linear form over the node's box crossed with that
+// range proves, for most nodes, that none of their points beats the candidate
+// (facet_search.cpp, shell_prunes). In 2D only the nodes near the facet's and the candidate's
+// points remain; in 3D, those near one circle of the sphere.
+//
+// The form's terms must be small for the bounds to be tight, so it is computed around g and
+// rho exactly (geometry::exact_lifted_form, once per candidate), and each point's offset from
+// the sphere, |x - g|^2 - rho, once per point in double-double arithmetic: the points' tests
+// then resolve their sign to within rounding of those small terms, and GMP is left with the
+// true ties. (With the search's own form, whose terms are a hundred times the value, most
+// tests near the sphere went to GMP: 3D, 8 000 points, 640 per simplex.)
+//
+// The bounds are sound for any g, but useful only when most points lie near a sphere, so the
+// shell is built only then (a least-squares fit; see sphere_shell.cpp). It changes which nodes
+// are visited, never the point found.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace drange::spatial {
+class KdTree;
+}
+
+namespace drange::engine {
+
+struct SphereShell {
+  std::vector<double> centre;  // g (dim doubles); empty when the input is not near a sphere
+  double rho = 0.0;            // the fitted squared radius
+  // Per point id: s = |x - g|^2 - rho, computed in double-double arithmetic and rounded, with
+  // | s - exact | <= u |s| + eta (u = 2^-53).
+  std::vector<double> offset;
+  double eta = 0.0;
+  std::vector<double> range;  // per kd-tree node: bounds of the exact |x - g|^2 - rho over its points
+
+  bool active() const { return !centre.empty(); }
+  const double* of(std::int32_t node) const { return &range[2 * static_cast<std::size_t>(node)]; }
+};
+
+// |x - g|^2 - rho in double-double arithmetic, rounded to a double; `bound` receives the
+// largest of rho and the computed |x - g|^2, on which the absolute error term depends:
+// | result - exact | <= u |result| + offset_error(dim) * bound.
+double sphere_offset(const double* x, const double* g, int dim, double rho, double& bound);
+double offset_error(int dim);
+
+// The shell of `n` points of dimension `dim` (row-major, in the tree's order: node ranges are
+// point ids), or an inactive one when fewer than 9 in 10 of them lie within a relative 2^-10
+// of the fitted sphere's squared radius.
+SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree);
+
+}  // namespace drange::engine

@@ -1,0 +1,211 @@
+// tests/sphere_shell_test.cpp: the search's shortcut for points near one sphere
+// (delaunay/sphere_shell.hpp, geometry::exact_lifted_form, facet_search.cpp's shell tests).
+//
+// Each piece against exact rationals: the points' offsets from the fitted sphere within their
+// stated bound, every node's range holding its points' exact offsets, and the lifted form equal
+// to the lifted determinant within the truncation of its coefficients. Then the whole: the
+// shell is built for points near a sphere (with an outlier too) and not for others, and the
+// triangulation with it is the one without it, valid, on spheres, caps, noisy spheres and the
+// exactly cocircular integer points, with far less work (a count, not a time).
+#include <gtest/gtest.h>
+
+#include <gmpxx.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "delaunay/facet_search.hpp"
+#include "delaunay/prepare_points.hpp"
+#include "delaunay/sphere_shell.hpp"
+#include "delaunay/team.hpp"
+#include "drange/check.hpp"
+#include "drange/delaunay.hpp"
+#include "drange/generate.hpp"
+#include "geometry/predicates.hpp"
+#include "oracle.hpp"
+
+namespace {
+
+using drange::Distribution;
+using drange::PointCloud;
+
+drange::engine::PointStore store_of(const PointCloud& points) {
+  drange::engine::Team team(1);
+  std::vector<drange::Duplicate> duplicates;
+  return drange::engine::prepare_points(points, drange::engine::search_leaf_size(points.dim), duplicates, team);
+}
+
+mpq_class exact_offset(const double* x, const double* g, int dim, double rho) {
+  mpq_class s = -mpq_class(rho);
+  for (int k = 0; k < dim; ++k) {
+    const mpq_class y = mpq_class(x[k]) - mpq_class(g[k]);
+    s += y * y;
+  }
+  return s;
+}
+
+// Points on the unit sphere of dimension d scaled by `radius` about `centre`, each moved off it
+// by a relative `noise` (0: cospherical up to rounding).
+PointCloud sphere(std::size_t n, int d, std::uint64_t seed, double radius = 1.0, double centre = 0.0, double noise = 0.0) {
+  PointCloud points = drange::generate_points(Distribution::Sphere, n, d, seed);
+  drange::test::TestRandom random(seed + 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double scale = radius * (1 + noise * (2 * random.uniform() - 1));
+    for (int k = 0; k < d; ++k) points.coords[i * static_cast<std::size_t>(d) + static_cast<std::size_t>(k)] =
+        centre + scale * points.coords[i * static_cast<std::size_t>(d) + static_cast<std::size_t>(k)];
+  }
+  return points;
+}
+
+TEST(SphereShell, BuiltForPointsNearASphereOnly) {
+  for (int d : {2, 3, 4, 5}) {
+    EXPECT_TRUE(store_of(sphere(3000, d, 7)).shell.active()) << "d=" << d;
+    EXPECT_TRUE(store_of(sphere(3000, d, 8, 3.0, 0.25, 1e-9)).shell.active()) << "noisy, off-centre, d=" << d;
+    EXPECT_FALSE(store_of(drange::generate_points(Distribution::Uniform, 3000, d, 9)).shell.active()) << "d=" << d;
+    EXPECT_FALSE(store_of(drange::generate_points(Distribution::Gaussian, 3000, d, 9)).shell.active()) << "d=" << d;
+  }
+  EXPECT_FALSE(store_of(drange::generate_points(Distribution::Grid, 4096, 3, 1)).shell.active());
+  EXPECT_FALSE(store_of(drange::generate_points(Distribution::Ball, 3000, 3, 1)).shell.active());
+  // One point at the centre: left out of the fit, so the centre stays exact to rounding.
+  PointCloud with_centre = sphere(3000, 3, 10);
+  with_centre.coords.insert(with_centre.coords.end(), {0.0, 0.0, 0.0});
+  const auto store = store_of(with_centre);
+  ASSERT_TRUE(store.shell.active());
+  for (double c : store.shell.centre) EXPECT_LT(std::fabs(c), 1e-12);
+}
+
+TEST(SphereShell, OffsetsAndNodeRangesBoundTheExactOffsets) {
+  for (int d : {2, 3, 5}) {
+    const auto store = store_of(sphere(2000, d, 11, 2.0, -0.5, 1e-12));
+    ASSERT_TRUE(store.shell.active());
+    const drange::engine::SphereShell& shell = store.shell;
+    std::vector<mpq_class> exact(static_cast<std::size_t>(store.size));
+    for (std::int32_t id = 0; id < store.size; ++id) {
+      const double s = shell.offset[static_cast<std::size_t>(id)];
+      exact[static_cast<std::size_t>(id)] = exact_offset(store.point(id), shell.centre.data(), d, shell.rho);
+      const mpq_class error = abs(exact[static_cast<std::size_t>(id)] - mpq_class(s));
+      EXPECT_LE(error, mpq_class(0x1p-53 * std::fabs(s)) + mpq_class(shell.eta)) << "d=" << d << " id=" << id;
+    }
+    const auto& nodes = store.tree.nodes();
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      for (std::int32_t id = nodes[i].begin; id < nodes[i].end; ++id) {
+        ASSERT_LE(mpq_class(shell.of(static_cast<std::int32_t>(i))[0]), exact[static_cast<std::size_t>(id)]) << "node " << i;
+        ASSERT_GE(mpq_class(shell.of(static_cast<std::int32_t>(i))[1]), exact[static_cast<std::size_t>(id)]) << "node " << i;
+      }
+  }
+}
+
+TEST(SphereShell, LiftedFormEqualsTheLiftedDeterminant) {
+  // det[r_1; ...; r_d; r_x] against b . (x - g) + lift (|x - g|^2 - rho) + constant, exactly,
+  // with the coefficients' truncation (a relative 2^-52 each) as the only allowed difference.
+  drange::test::TestRandom random(12);
+  for (int d : {2, 3, 4, 6}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      const PointCloud points = sphere(static_cast<std::size_t>(d + 2), d, 100 + static_cast<std::uint64_t>(trial), 1.5, 0.125,
+                                       trial % 2 ? 1e-6 : 0.0);
+      std::vector<double> g(static_cast<std::size_t>(d));
+      for (double& c : g) c = 0.125 + (random.uniform() - 0.5) * 1e-9;
+      const double rho = 2.25 * (1 + (random.uniform() - 0.5) * 1e-9);
+      std::vector<const double*> rows;
+      for (int i = 1; i <= d; ++i) rows.push_back(points.point(static_cast<std::size_t>(i)));
+      const drange::geometry::Frame frame{d, d, nullptr, points.point(0)};
+      std::vector<double> b(static_cast<std::size_t>(d));
+      double lift = 0.0, constant = 0.0;
+      ASSERT_TRUE(drange::geometry::exact_lifted_form(frame, rows.data(), g.data(), rho, b.data(), &lift, &constant));
+      const double* x = points.point(static_cast<std::size_t>(d + 1));
+      // The determinant, exactly.
+      std::vector<mpq_class> m;
+      for (int r = 0; r <= d; ++r) {
+        const double* p = r < d ? rows[static_cast<std::size_t>(r)] : x;
+        mpq_class lifted = 0;
+        for (int k = 0; k < d; ++k) {
+          const mpq_class delta = mpq_class(p[k]) - mpq_class(points.point(0)[k]);
+          m.push_back(delta);
+          lifted += delta * delta;
+        }
+        m.push_back(lifted);
+      }
+      const mpq_class det = drange::test::reference_determinant(m, d + 1);
+      mpq_class form = mpq_class(constant), magnitude = abs(mpq_class(constant));
+      for (int k = 0; k < d; ++k) {
+        const mpq_class term = mpq_class(b[static_cast<std::size_t>(k)]) * (mpq_class(x[k]) - mpq_class(g[static_cast<std::size_t>(k)]));
+        form += term;
+        magnitude += abs(term);
+      }
+      const mpq_class offset_term = mpq_class(lift) * exact_offset(x, g.data(), d, rho);
+      form += offset_term;
+      magnitude += abs(offset_term);
+      EXPECT_LE(abs(form - det), magnitude * mpq_class(0x1p-51)) << "d=" << d << " trial " << trial;
+      EXPECT_EQ(sgn(form), sgn(det)) << "d=" << d << " trial " << trial;
+    }
+  }
+}
+
+std::vector<drange::test::Simplex> canonical(const drange::Triangulation& t) { return drange::test::canonical(t.simplices, t.dim); }
+
+drange::Triangulation triangulate(const PointCloud& points, const char* variant) {
+  drange::Options options;
+  options.search = drange::search_variant(variant);
+  options.threads = 1;
+  return drange::delaunay(points, options);
+}
+
+TEST(SphereShell, SameValidTriangulationWithAndWithoutIt) {
+  std::vector<std::pair<std::string, PointCloud>> cases = {
+      {"circle", sphere(3000, 2, 21)},
+      {"sphere 3D", sphere(1500, 3, 22)},
+      {"sphere 4D", sphere(300, 4, 23)},
+      {"off-centre sphere 3D", sphere(1500, 3, 24, 0.75, 3.0)},
+      {"noisy sphere 3D", sphere(1500, 3, 25, 1.0, 0.0, 1e-9)},
+      {"noisy circle", sphere(3000, 2, 26, 1.0, 0.0, 1e-7)},
+  };
+  {
+    // A cap: the points of a sphere with z > 0.5.
+    const PointCloud all = sphere(4000, 3, 27);
+    PointCloud cap{3, {}};
+    for (std::size_t i = 0; i < all.size(); ++i)
+      if (all.point(i)[2] > 0.5) cap.coords.insert(cap.coords.end(), all.point(i), all.point(i) + 3);
+    cases.emplace_back("cap", cap);
+  }
+  {
+    PointCloud c = sphere(1500, 3, 28);  // and its centre
+    c.coords.insert(c.coords.end(), {0.0, 0.0, 0.0});
+    cases.emplace_back("sphere and centre", c);
+  }
+  {
+    // Every integer point of the circle x^2 + y^2 = 5^4 13^2 (exactly cocircular: ties that
+    // only the perturbation breaks).
+    PointCloud c{2, {}};
+    const long r2 = 625L * 169L;
+    for (long x = -325; x <= 325; ++x)
+      for (long y = -325; y <= 325; ++y)
+        if (x * x + y * y == r2) c.coords.insert(c.coords.end(), {double(x), double(y)});
+    cases.emplace_back("integer circle", c);
+  }
+  for (const auto& [name, points] : cases) {
+    const drange::engine::PointStore store = store_of(points);
+    EXPECT_TRUE(store.shell.active()) << name;
+    const drange::Triangulation with = triangulate(points, "full"), without = triangulate(points, "no-shell");
+    EXPECT_EQ(canonical(with), canonical(without)) << name;
+    const drange::CheckReport report = drange::check_triangulation(points, with.simplices);
+    EXPECT_TRUE(report.valid) << name << ": " << (report.problems.empty() ? "" : report.problems.front());
+    // Two threads: the same simplices.
+    drange::Options two;
+    two.threads = 2;
+    EXPECT_EQ(canonical(drange::delaunay(points, two)), canonical(with)) << name;
+  }
+}
+
+TEST(SphereShell, CutsTheWorkOnSpheres) {
+  // Counters, not times: without the shell every search scans nearly every point, and GMP
+  // decides most points near the candidate's sphere.
+  for (int d : {2, 3}) {
+    const PointCloud points = sphere(d == 2 ? 8000 : 2000, d, 31);
+    const drange::Statistics with = triangulate(points, "full").stats, without = triangulate(points, "no-shell").stats;
+    EXPECT_LT(with.points_tested * 3, without.points_tested) << "d=" << d;
+    EXPECT_LT(with.exact_fallbacks * 100, without.exact_fallbacks) << "d=" << d;
+  }
+}
+
+}  // namespace
