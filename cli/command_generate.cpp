@@ -28,7 +28,7 @@ std::string generate_help() {
              "  uniform     uniform in the unit cube [0,1)^D\n"
              "  ball        uniform in the unit ball\n"
              "  sphere      uniform on the unit sphere (cospherical up to rounding: degenerate,\n"
-             "              and the slowest case for drange, whose search time grows as N^2)\n"
+             "              and the slowest case for drange, whose search time grows as N^1.5)\n"
              "  gaussian    standard normal in every coordinate\n"
              "  clustered   floor(sqrt(N)) gaussian clusters (deviation 0.01) around uniform centres\n"
              "  grid        the first N points of the integer grid {0..k-1}^D in lexicographic\n"
