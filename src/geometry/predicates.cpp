@@ -124,16 +124,17 @@ int exact_orientation(const Frame& f, const double* const* points) {
   return bareiss_in_place(x.matrix, f.k, x.pivot) * sgn(x.matrix[static_cast<std::size_t>(f.k * f.k - 1)]);
 }
 
-int exact_lifted_sign(const Frame& f, const double* const* points) {
-  ++exact_count;
-  const int n = f.k + 1;
-  const IntegerScale scale = scale_of(f.dim, f.base, points, n);
-  ExactScratch& x = exact_scratch();
+// The integer lifted rows of `count` points in `scale`'s units (spatial entries in 2^shift,
+// the lift in 2^(2 shift)): row r is [pi(p_r - base), |p_r - base|^2], f.k + 1 entries, into
+// `rows` (x.base and x.delta are scratch). Leaves base's integers in x.base.
+void integer_lifted_rows(const Frame& f, const IntegerScale& scale, const double* const* points, int count,
+                         ExactScratch& x, std::vector<mpz_class>& rows) {
+  const int width = f.k + 1;
   x.base.resize(static_cast<std::size_t>(f.dim));
   x.delta.resize(static_cast<std::size_t>(f.dim));
-  x.matrix.resize(static_cast<std::size_t>(n * n));
+  rows.resize(static_cast<std::size_t>(count * width));
   for (int c = 0; c < f.dim; ++c) scale.assign_integer(f.base[c], x.base[static_cast<std::size_t>(c)]);
-  for (int r = 0; r < n; ++r) {
+  for (int r = 0; r < count; ++r) {
     x.lift = 0;
     for (int c = 0; c < f.dim; ++c) {
       mpz_class& delta = x.delta[static_cast<std::size_t>(c)];
@@ -142,9 +143,17 @@ int exact_lifted_sign(const Frame& f, const double* const* points) {
       mpz_mul(x.square.get_mpz_t(), delta.get_mpz_t(), delta.get_mpz_t());
       x.lift += x.square;
     }
-    for (int c = 0; c < f.k; ++c) x.matrix[static_cast<std::size_t>(r * n + c)] = x.delta[static_cast<std::size_t>(f.axis(c))];
-    x.matrix[static_cast<std::size_t>(r * n + f.k)] = x.lift;
+    for (int c = 0; c < f.k; ++c) rows[static_cast<std::size_t>(r * width + c)] = x.delta[static_cast<std::size_t>(f.axis(c))];
+    rows[static_cast<std::size_t>(r * width + f.k)] = x.lift;
   }
+}
+
+int exact_lifted_sign(const Frame& f, const double* const* points) {
+  ++exact_count;
+  const int n = f.k + 1;
+  const IntegerScale scale = scale_of(f.dim, f.base, points, n);
+  ExactScratch& x = exact_scratch();
+  integer_lifted_rows(f, scale, points, n, x, x.matrix);
   return bareiss_in_place(x.matrix, n, x.pivot) * sgn(x.matrix[static_cast<std::size_t>(n * n - 1)]);
 }
 
@@ -284,29 +293,15 @@ bool exact_lifted_form(const Frame& f, const double* const* points, const double
   scale.include(rho);
   const long unit = scale.shift();
   ExactScratch& x = exact_scratch();
-  x.base.resize(static_cast<std::size_t>(k));
-  x.delta.resize(static_cast<std::size_t>(k));
   // The integer lifted rows (spatial entries in units of 2^unit, the lift in 2^(2 unit)), and
   // the cofactors of the last row: C_j = (-1)^(k + j) times the minor without column j, in
   // units of 2^(unit (k + 1)) for j < k and 2^(unit k) for the lift column.
   thread_local std::vector<mpz_class> rows, cofactor, e;
   thread_local mpz_class term, sum, rho_lift;
-  rows.resize(static_cast<std::size_t>(k * (k + 1)));
+  integer_lifted_rows(f, scale, points, k, x, rows);
   cofactor.resize(static_cast<std::size_t>(k + 1));
   e.resize(static_cast<std::size_t>(k));
   x.matrix.resize(static_cast<std::size_t>(k * k));
-  for (int c = 0; c < k; ++c) scale.assign_integer(f.base[c], x.base[static_cast<std::size_t>(c)]);
-  for (int r = 0; r < k; ++r) {
-    x.lift = 0;
-    for (int c = 0; c < k; ++c) {
-      mpz_class& delta = rows[static_cast<std::size_t>(r * (k + 1) + c)];
-      scale.assign_integer(points[r][c], delta);
-      delta -= x.base[static_cast<std::size_t>(c)];
-      mpz_mul(x.square.get_mpz_t(), delta.get_mpz_t(), delta.get_mpz_t());
-      x.lift += x.square;
-    }
-    rows[static_cast<std::size_t>(r * (k + 1) + k)] = x.lift;
-  }
   for (int j = 0; j <= k; ++j) {
     for (int r = 0; r < k; ++r)
       for (int c = 0, out = 0; c <= k; ++c)
