@@ -1,4 +1,4 @@
-// delaunay/sphere_shell.cpp: the sphere fit and the nodes' ranges of |x - g|^2.
+// delaunay/sphere_shell.cpp: the sphere fit, the points' offsets and the nodes' ranges.
 #include "delaunay/sphere_shell.hpp"
 
 #include <algorithm>
@@ -124,8 +124,9 @@ double two_sum_error(double a, double b, double s) {
 
 bool mostly(std::size_t part, std::size_t whole) { return static_cast<double>(part) >= kInlierShare * static_cast<double>(whole); }
 
-}  // namespace
-
+// |x - g|^2 - rho in double-double arithmetic, rounded to a double; `bound` receives the
+// largest of rho and the computed |x - g|^2, on which the absolute error term depends:
+// | result - exact | <= u |result| + offset_error(dim) * bound.
 double sphere_offset(const double* x, const double* g, int dim, double rho, double& bound) {
   // Double-double: x_k - g_k = h + l exactly (two-sum); h^2 = p + q exactly (fma); the p are
   // added to -rho with two-sum (exact: hi plus the errors), the rest (errors, q, 2 h l) to lo.
@@ -152,6 +153,8 @@ double sphere_offset(const double* x, const double* g, int dim, double rho, doub
 }
 
 double offset_error(int dim) { return 4.0 * (3 * dim * (dim + 4) + 3) * geometry::kUnitRoundoff * geometry::kUnitRoundoff; }
+
+}  // namespace
 
 SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree) {
   SphereShell shell;

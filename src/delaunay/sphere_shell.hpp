@@ -1,5 +1,6 @@
-// delaunay/sphere_shell.hpp: for points that lie near one sphere, the range of their lifted
-// coordinate |x - g|^2 in every kd-tree node (our step, SearchOptions::sphere_shell).
+// delaunay/sphere_shell.hpp: for points that lie near one sphere (centre g, squared radius
+// rho), each point's offset |x - g|^2 - rho and their range in every kd-tree node (our step,
+// SearchOptions::sphere_shell).
 //
 // Why: on (nearly) cospherical input, every candidate's sphere is within rounding of the input
 // sphere, so its ball meets every kd-tree node near that sphere and the search scans nearly
@@ -44,12 +45,6 @@ struct SphereShell {
   bool active() const { return !centre.empty(); }
   const double* of(std::int32_t node) const { return &range[2 * static_cast<std::size_t>(node)]; }
 };
-
-// |x - g|^2 - rho in double-double arithmetic, rounded to a double; `bound` receives the
-// largest of rho and the computed |x - g|^2, on which the absolute error term depends:
-// | result - exact | <= u |result| + offset_error(dim) * bound.
-double sphere_offset(const double* x, const double* g, int dim, double rho, double& bound);
-double offset_error(int dim);
 
 // The shell of `n` points of dimension `dim` (row-major, in the tree's order: node ranges are
 // point ids), or an inactive one when fewer than 9 in 10 of them lie within a relative 2^-10
