@@ -7,6 +7,8 @@
 #include <numeric>
 #include <vector>
 
+#include "util/select_nth.hpp"
+
 namespace drange::spatial {
 
 void KdTree::build(const double* coords, std::int32_t n, int dim, int leaf_size) {
@@ -61,6 +63,24 @@ struct Item {
   double x[D];
   std::int32_t id;
 };
+
+// The build's order on an axis: the coordinate, then the index (a strict total order, so the
+// median split, and so the tree, is the same whatever the selection algorithm), evaluated
+// without branches (util/select_nth.hpp).
+inline bool comes_before(double x, std::int32_t i, double y, std::int32_t j) { return (x < y) | ((x == y) & (i < j)); }
+
+template <class Item>
+void split_at(Item* first, Item* middle, Item* last, int axis) {
+  util::select_nth(first, middle, last,
+                   [axis](const Item& a, const Item& b) { return comes_before(a.x[axis], a.id, b.x[axis], b.id); });
+}
+
+// A range that is split no further is put in index order: the point order then does not depend
+// on how the selection left it.
+template <class Item>
+void order_by_index(Item* first, Item* last) {
+  std::sort(first, last, [](const Item& a, const Item& b) { return a.id < b.id; });
+}
 
 // The tight box [lo, hi] of items[begin, end), and its widest axis.
 template <class Item>
@@ -118,8 +138,7 @@ void KdTree::build_fixed(const double* coords, std::int32_t n, int leaf_size, do
   }
 }
 
-// As build_node, step for step (std::nth_element sees the same keys in the same order, so it
-// makes the same moves: the tree is the same).
+// As build_node, step for step (the same total order: the tree is the same).
 template <class Item>
 std::int32_t KdTree::build_items(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, std::int32_t parent,
                                  bool emit) {
@@ -133,10 +152,12 @@ std::int32_t KdTree::build_items(Item* items, std::int32_t begin, std::int32_t e
     std::copy_n(hi, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim + kDim]);
     if (leaf) std::fill(leaf_out_ + begin, leaf_out_ + end, index);
   }
-  if (end - begin <= std::min(leaf_size, kOrderLeafSize) || hi[axis] == lo[axis]) return index;
+  if (end - begin <= std::min(leaf_size, kOrderLeafSize) || hi[axis] == lo[axis]) {
+    order_by_index(items + begin, items + end);
+    return index;
+  }
   const std::int32_t middle = begin + (end - begin) / 2;
-  std::nth_element(items + begin, items + middle, items + end,
-                   [axis](const Item& a, const Item& b) { return a.x[axis] < b.x[axis]; });
+  split_at(items + begin, items + middle, items + end, axis);
   const bool children = emit && !leaf;  // else only the order is refined (see kOrderLeafSize)
   if (children) {
     nodes_[static_cast<std::size_t>(index)].split_axis = axis;
@@ -168,8 +189,7 @@ void KdTree::build_items_parallel(Item* items, std::int32_t begin, std::int32_t 
   std::copy_n(lo, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim]);
   std::copy_n(hi, kDim, &boxes_[static_cast<std::size_t>(index) * 2 * kDim + kDim]);
   const std::int32_t middle = begin + (end - begin) / 2;
-  std::nth_element(items + begin, items + middle, items + end,
-                   [axis](const Item& a, const Item& b) { return a.x[axis] < b.x[axis]; });
+  split_at(items + begin, items + middle, items + end, axis);
   nodes_[static_cast<std::size_t>(index)].split_axis = axis;
   nodes_[static_cast<std::size_t>(index)].split_value = items[middle].x[axis];
   KdTree left, right;
@@ -220,12 +240,15 @@ std::int32_t KdTree::build_node(const double* coords, std::int32_t begin, std::i
     if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
   const bool leaf = end - begin <= leaf_size || hi[axis] == lo[axis];
   if (emit && leaf) std::fill(leaf_out_ + begin, leaf_out_ + end, index);
-  if (end - begin <= std::min(leaf_size, kOrderLeafSize) || hi[axis] == lo[axis]) return index;
+  std::int32_t* first = order_.data() + begin;
+  if (end - begin <= std::min(leaf_size, kOrderLeafSize) || hi[axis] == lo[axis]) {
+    std::sort(first, order_.data() + end);  // by index, as order_by_index
+    return index;
+  }
 
   const std::int32_t middle = begin + (end - begin) / 2;
-  auto first = order_.begin() + begin;
-  std::nth_element(first, order_.begin() + middle, order_.begin() + end, [&](std::int32_t a, std::int32_t b) {
-    return coords[static_cast<std::size_t>(a) * dim_ + axis] < coords[static_cast<std::size_t>(b) * dim_ + axis];
+  util::select_nth(first, order_.data() + middle, order_.data() + end, [&](std::int32_t a, std::int32_t b) {
+    return comes_before(coords[static_cast<std::size_t>(a) * dim_ + axis], a, coords[static_cast<std::size_t>(b) * dim_ + axis], b);
   });
   const double split = point(middle)[axis];
   // Left: [begin, middle), all <= split after nth_element; the boxes are tight, so a

@@ -7,10 +7,12 @@
 // preorder (the left child of node i is i + 1), each with the tight bounding box of its points.
 // Leaves hold up to `leaf_size` points ("bucketed"), which keeps the tree shallow and the
 // innermost loop a linear scan. Within a leaf larger than kOrderLeafSize, the points are still
-// ordered by the same median splits down to kOrderLeafSize, so the order (the caller's point
-// ids) is the same for every leaf size >= kOrderLeafSize: the engine numbers its points in this
-// order, the order of its output follows the ids, and so the leaf size, a tuning constant,
-// changes no output byte. (Near points also stay near in memory.)
+// ordered by the same median splits down to kOrderLeafSize, and by index below, so the order
+// (the caller's point ids) is the same for every leaf size >= kOrderLeafSize: the engine
+// numbers its points in this order, the order of its output follows the ids, and so the leaf
+// size, a tuning constant, changes no output byte. (Near points also stay near in memory.)
+// Medians are taken in a strict total order (the coordinate, then the index), so the tree and
+// the order do not depend on the selection algorithm either.
 //
 // `search` walks the tree under a query box that the visitor may shrink at any moment (the
 // paper's narrowing search region); the visitor also decides which child to enter first

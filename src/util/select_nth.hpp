@@ -1,0 +1,96 @@
+// util/select_nth.hpp: std::nth_element's contract, with partitions that do not branch on the
+// comparison.
+//
+// The kd-tree build (spatial/kdtree.cpp) splits every node at the median of random keys, where
+// each branch of std::nth_element's partition goes either way with equal odds: about half of
+// them are mispredicted. Here the partition is Lomuto's, with the element moves made whatever
+// the comparison says and only the write position advanced by it (A. Alexandrescu, "Lomuto's
+// Comeback", 2020): a comparison costs a few instructions and no misprediction. The pivot is
+// the median of three, or of three medians of three on large ranges, and a range that does not
+// shrink fast enough (a pathological order) is finished by std::nth_element.
+//
+// With a strict total order (the kd-tree's: key, then index), the elements before and after nth
+// are the same sets whatever the algorithm, so the result matches std::nth_element's up to the
+// order within each side.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+
+namespace drange::util {
+
+namespace select_detail {
+
+// Moves the median of *a, *b, *c (by `less`) to *a.
+template <class T, class Less>
+void median_to(T* a, T* b, T* c, Less less) {
+  if (less(*b, *a)) std::swap(*a, *b);   // a <= b
+  if (less(*c, *b)) {                     // c < b: the median is max(a, c)
+    if (less(*a, *c)) std::swap(*a, *c);  // c is the median
+    return;
+  }
+  std::swap(*a, *b);  // a <= b <= c: b is the median
+}
+
+// Partitions [first, last) around the pivot *first: returns p with *p the pivot, every element
+// of [first, p) less than it, and none of (p, last).
+template <class T, class Less>
+T* partition_around_first(T* first, T* last, Less less) {
+  const T pivot = *first;
+  T* write = first + 1;  // [first + 1, write) < pivot <= [write, read)
+  for (T* read = first + 1; read != last; ++read) {
+    const T x = *read;
+    const bool smaller = less(x, pivot);
+    *read = *write;
+    *write = x;
+    write += smaller;
+  }
+  --write;
+  *first = *write;
+  *write = pivot;
+  return write;
+}
+
+}  // namespace select_detail
+
+// Rearranges [first, last) so that *nth is the element a full sort would put there, none of
+// [first, nth) comes after it and none of (nth, last) before it.
+template <class T, class Less>
+void select_nth(T* first, T* nth, T* last, Less less) {
+  using select_detail::median_to;
+  constexpr std::ptrdiff_t kSmall = 16;  // sorted outright
+  int budget = 8;
+  for (std::ptrdiff_t n = last - first; n > 1; n >>= 1) budget += 2;
+  while (last - first > kSmall) {
+    if (budget-- == 0) {
+      std::nth_element(first, nth, last, less);
+      return;
+    }
+    const std::ptrdiff_t n = last - first;
+    T* middle = first + n / 2;
+    if (n >= 256) {  // Tukey's ninther: a pivot nearer the median in fewer passes
+      const std::ptrdiff_t step = n / 8;
+      median_to(first + 1, first + 1 + step, first + 1 + 2 * step, less);
+      median_to(middle, middle - step, middle + step, less);
+      median_to(last - 1, last - 1 - step, last - 1 - 2 * step, less);
+      median_to(middle, first + 1, last - 1, less);
+    } else {
+      median_to(middle, first, last - 1, less);
+    }
+    std::swap(*first, *middle);
+    T* pivot = select_detail::partition_around_first(first, last, less);
+    if (pivot == nth) return;
+    if (nth < pivot) last = pivot;
+    else first = pivot + 1;
+  }
+  // Insertion sort of the few left.
+  for (T* i = first + 1; i < last; ++i) {
+    T x = std::move(*i);
+    T* j = i;
+    for (; j > first && less(x, *(j - 1)); --j) *j = std::move(*(j - 1));
+    *j = std::move(x);
+  }
+}
+
+}  // namespace drange::util
