@@ -135,7 +135,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   unsigned boxes_maybe_open_side(const double* boxes) const;
   // The lanes (kPairs pairs of a value and its absolute tree) whose sign the orientation's
   // filter certifies negative, as a bit mask.
-  unsigned certified_negative(const Pair* value, const Pair* abs_tree) const;
+  unsigned certified_negative(const Pair* value, const Pair* abs_tree, double factor) const;
   // The squared distances to the ball's centre of a block's points (transposed coordinates),
   // and lower bounds of those of the points in a group's boxes.
   void point_distances(const double* lanes, double* distance2) const;
@@ -155,14 +155,23 @@ class SearchKernel final : public FacetSearch::Kernel {
   void set_shell_form();
   int shell_sign(std::int32_t id) const;
   bool shell_prunes(std::int32_t node) const;
-  // The sign of sigma O over the computed value, when certified or proved exact; else 0.
-  int orientation_sign(double value, double abs_tree) const;
+  // The sign of sigma O over the computed value, when certified with the bound factor `gamma`
+  // or proved exact; else 0.
+  int orientation_sign(double value, double abs_tree, double gamma) const;
 
   const PointStore& points_;
   SearchOptions options_;
   int d_;
   double orient_gamma_;  // error bound factors (error_bound.hpp) of O(x) and I(p, x)
   double lifted_gamma_;
+  // The factor of a box's largest sigma O (prune, boxes_maybe_open_side). That sum takes each
+  // term at the box's corner that the *computed* coefficient a_k's sign picks: the value of O at
+  // that corner, within orient_gamma_ of its absolute tree. Where a_k's sign is wrong, the
+  // exact A_k is no larger than a_k's error, gamma_c |a|_k (gamma_c: the (d-1)-minor's factor),
+  // and the other corner is larger by |A_k| (hi_k - lo_k) <= 2.01 gamma_c |a|_k max(|lo_k -
+  // f0_k|, |hi_k - f0_k|): the box's largest O is within orient_gamma_ + 2.01 gamma_c of the
+  // absolute tree above the computed sum.
+  double box_orient_gamma_;
   // 2^(52 + unit_exponent * units), dyadic points: the limit below which a minor with that many
   // units (its columns, the lift column counting twice) was computed exactly.
   std::array<double, kMaxRow + 3> exact_limits_{};
@@ -225,6 +234,7 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       options_(options),
       d_(points.dim),
       orient_gamma_(geometry::gamma_bound(geometry::laplace_roundings(points.dim, 1))),
+      box_orient_gamma_(orient_gamma_ + 2.01 * geometry::gamma_bound(geometry::laplace_roundings(points.dim - 1, 1))),
       lifted_gamma_(geometry::gamma_bound(
           geometry::laplace_roundings(points.dim + 1, geometry::lifted_entry_roundings(points.dim)))),
       minors_(points.dim + 1),
@@ -449,8 +459,8 @@ bool SearchKernel<D>::shell_prunes(std::int32_t node) const {
 }
 
 template <int D>
-int SearchKernel<D>::orientation_sign(double value, double abs_tree) const {
-  const int s = facet_clean_ ? certified_sign_with(value, abs_tree, orient_gamma_) : 0;
+int SearchKernel<D>::orientation_sign(double value, double abs_tree, double gamma) const {
+  const int s = facet_clean_ ? certified_sign_with(value, abs_tree, gamma) : 0;
   if (s != 0 || !orientation_exact_ || !(abs_tree < orient_exact_limit_)) return s;
   return value > 0 ? 1 : -1;  // exact: 0 counts as the closed side, like negative values
 }
@@ -463,7 +473,7 @@ bool SearchKernel<D>::on_open_side(std::int32_t id) {
     o += a_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
     o_abs += a_abs_[static_cast<std::size_t>(k)] * std::fabs(row_[static_cast<std::size_t>(k)]);
   }
-  int s = orientation_sign(o, o_abs);
+  int s = orientation_sign(o, o_abs, orient_gamma_);
   if (s == 0) {
     rows_[static_cast<std::size_t>(d - 1)] = points_.point(id);
     const geometry::Frame frame{d, d, nullptr, f0_};
@@ -576,10 +586,10 @@ void SearchKernel<D>::scan_blocks_for_open_side(std::int32_t begin, std::int32_t
 }
 
 template <int D>
-unsigned SearchKernel<D>::certified_negative(const Pair* value, const Pair* abs_tree) const {
-  // certified_sign_with's test for -1 with the orientation's error bound, lane by lane: bit l
+unsigned SearchKernel<D>::certified_negative(const Pair* value, const Pair* abs_tree, double factor) const {
+  // certified_sign_with's test for -1 with the error bound factor `factor`, lane by lane: bit l
   // of the result is set when lane l's value is certified negative.
-  const Pair gamma = {orient_gamma_, orient_gamma_};
+  const Pair gamma = {factor, factor};
   const Pair low = {geometry::kFilterUnderflow, geometry::kFilterUnderflow};
   const Pair high = {geometry::kFilterOverflow, geometry::kFilterOverflow};
   unsigned negative = 0;
@@ -615,7 +625,7 @@ unsigned SearchKernel<D>::boxes_maybe_open_side(const double* boxes) const {
       m_abs[i] += a_abs * (abs_lo > abs_hi ? abs_lo : abs_hi);
     }
   }
-  return ~certified_negative(m, m_abs) & kAll;
+  return ~certified_negative(m, m_abs, box_orient_gamma_) & kAll;
 }
 
 template <int D>
@@ -640,7 +650,7 @@ unsigned SearchKernel<D>::maybe_open_side(const double* lanes, int count) const 
       o_abs[i] += a_abs * (row < zero ? -row : row);
     }
   }
-  return ~certified_negative(o, o_abs) & all;
+  return ~certified_negative(o, o_abs, orient_gamma_) & all;
 }
 
 template <int D>
@@ -726,7 +736,8 @@ bool SearchKernel<D>::prune(std::int32_t node) const {
   // ball, or without ball queries at all (the paper's search).
   if (!options_.prune_closed_side || !facet_clean_ || ball_) return false;
   // The largest value of sigma O over the node's box, at the corner that maximises each term
-  // (rounding is monotonic: a * dhi >= a * dlo in floating point too when a >= 0).
+  // (rounding is monotonic: a * dhi >= a * dlo in floating point too when a >= 0); the bound
+  // factor covers a computed a of the wrong sign (box_orient_gamma_).
   double m = 0.0, m_abs = 0.0;
   for (int k = 0; k < d; ++k) {
     const double a = a_[static_cast<std::size_t>(k)];
@@ -734,7 +745,7 @@ bool SearchKernel<D>::prune(std::int32_t node) const {
     m += a * (a >= 0 ? dhi : dlo);
     m_abs += a_abs_[static_cast<std::size_t>(k)] * std::max(std::fabs(dlo), std::fabs(dhi));
   }
-  return orientation_sign(m, m_abs) < 0;
+  return orientation_sign(m, m_abs, box_orient_gamma_) < 0;
 }
 
 template <int D>
