@@ -4,11 +4,16 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "drange/errors.hpp"
+#include "geometry/error_bound.hpp"
+#include "geometry/minors.hpp"
 #include "geometry/predicates.hpp"
 
 namespace drange::engine {
@@ -63,6 +68,56 @@ std::vector<Result> scan_in_chunks(const Ids& ids, Team& team, Scan scan) {
   });
   return results;
 }
+
+// The orientation of k - 1 fixed points and a varying point x in a frame of k axes,
+// det[pi(p_1 - base); ...; pi(p_{k-1} - base); pi(x - base)], as the linear function of x it is:
+// its cofactors along the last row are computed once (with their absolute trees), then each x
+// costs k products and the certified sign of their sum, as the search's on_open_side does
+// (facet_search.cpp); the scans ask the exact predicate only when that filter cannot decide.
+// The value is the Laplace expansion of the whole determinant along its last row, so the
+// determinant's error bound applies.
+class LinearOrientation {
+ public:
+  // `fixed`: the k - 1 fixed points; `filter`: false leaves every sign to the exact predicate
+  // (as the search does for points that were not scaled, prepare_points.cpp).
+  LinearOrientation(int k, const int* axes, const double* base, const double* const* fixed, bool filter)
+      : k_(k), axes_(axes, axes + k), base_(base), gamma_(geometry::gamma_bound(geometry::laplace_roundings(k, 1))) {
+    geometry::MinorTable minors(k);
+    std::array<double, geometry::SubsetTable::kMaxColumns> row{};
+    const geometry::FloatingPointWatch watch;
+    for (int r = 0; r + 1 < k; ++r) {
+      for (int c = 0; c < k; ++c) row[static_cast<std::size_t>(c)] = fixed[r][axes[c]] - base[axes[c]];
+      minors.set_row(r, row.data());
+    }
+    clean_ = filter && watch.clean();
+    const std::uint32_t all = (std::uint32_t{1} << k) - 1;
+    for (int c = 0; c < k; ++c) {
+      const double sign = ((k - 1 + c) & 1) ? -1.0 : 1.0;
+      cofactor_[static_cast<std::size_t>(c)] = sign * minors.minor(all & ~(std::uint32_t{1} << c));
+      cofactor_abs_[static_cast<std::size_t>(c)] = minors.abs_minor(all & ~(std::uint32_t{1} << c));
+    }
+  }
+  // The certified sign of the determinant with x as last row, or 0 when undecided.
+  int sign(const double* x) const {
+    if (!clean_) return 0;
+    double value = 0.0, abs_tree = 0.0;
+    for (int c = 0; c < k_; ++c) {
+      const int axis = axes_[static_cast<std::size_t>(c)];
+      const double delta = x[axis] - base_[axis];
+      value += cofactor_[static_cast<std::size_t>(c)] * delta;
+      abs_tree += cofactor_abs_[static_cast<std::size_t>(c)] * std::fabs(delta);
+    }
+    return geometry::certified_sign_with(value, abs_tree, gamma_);
+  }
+
+ private:
+  int k_;
+  std::vector<int> axes_;
+  const double* base_;
+  double gamma_;
+  bool clean_ = false;
+  std::array<double, geometry::SubsetTable::kMaxColumns> cofactor_{}, cofactor_abs_{};
+};
 
 class Wrapper {
  public:
@@ -163,11 +218,20 @@ Wrapper::StepScan Wrapper::scan_step(const std::int32_t* first, const std::int32
   rotation_rows.push_back(-1);
   Axes without(static_cast<std::size_t>(j));
   std::vector<const double*> scratch;
+  // The filters of the two orientations below, linear in x: the side of F_{j-1} (rows found[1..]
+  // and x), and the rotation (rows found[1..], the best so far and x), rebuilt when the best
+  // changes.
+  std::vector<const double*> fixed;
+  for (std::size_t i = 1; i < found.size(); ++i) fixed.push_back(points_.point(found[i]));
+  const LinearOrientation side_of(j, axes.data(), points_.point(v0), fixed.data(), points_.scaled);
+  fixed.push_back(nullptr);
+  std::optional<LinearOrientation> rotation;
   StepScan scan;
   for (const std::int32_t* it = first; it != last; ++it) {
     const std::int32_t x = *it;
     rows.back() = x;
-    const int o = orient(axes.data(), j, v0, rows, scratch);  // the side of F_{j-1}
+    int o = side_of.sign(points_.point(x));  // the side of F_{j-1}
+    if (o == 0) o = orient(axes.data(), j, v0, rows, scratch);
     if (o == 0) {
       // x on F_{j-1}: G + x is F_{j-1} itself in the rotation plane, hence supporting, unless x
       // lies in G, which it does exactly when every j x j minor over the first j+1 axes vanishes.
@@ -188,11 +252,22 @@ Wrapper::StepScan Wrapper::scan_step(const std::int32_t* first, const std::int32
       scan.best = x;
       continue;
     }
+    if (!rotation) {
+      fixed.back() = points_.point(scan.best);
+      rotation.emplace(j + 1, axes.data(), points_.point(v0), fixed.data(), points_.scaled);
+    }
     // All candidates lie strictly on one side of F_{j-1}, within less than half a turn: the
     // rotation order is the orientation of (G, best, x) in the first j+1 axes.
-    rotation_rows[static_cast<std::size_t>(j - 1)] = scan.best;
-    rotation_rows[static_cast<std::size_t>(j)] = x;
-    if (scan.side * orient(axes.data(), j + 1, v0, rotation_rows, scratch) > 0) scan.best = x;
+    int turn = rotation->sign(points_.point(x));
+    if (turn == 0) {
+      rotation_rows[static_cast<std::size_t>(j - 1)] = scan.best;
+      rotation_rows[static_cast<std::size_t>(j)] = x;
+      turn = orient(axes.data(), j + 1, v0, rotation_rows, scratch);
+    }
+    if (scan.side * turn > 0) {
+      scan.best = x;
+      rotation.reset();  // rebuilt for the new best at the next candidate
+    }
   }
   return scan;
 }
@@ -203,11 +278,15 @@ Wrapper::SupportScan Wrapper::scan_support(const std::int32_t* first, const std:
   Ids rows(found.begin() + 1, found.end());
   rows.push_back(-1);
   std::vector<const double*> scratch;
+  std::vector<const double*> fixed;
+  for (std::size_t i = 1; i < found.size(); ++i) fixed.push_back(points_.point(found[i]));
+  const LinearOrientation side_of(k, axes.data(), points_.point(found[0]), fixed.data(), points_.scaled);
   SupportScan scan;
   for (const std::int32_t* it = first; it != last; ++it) {
     const std::int32_t x = *it;
     rows.back() = x;
-    const int o = orient(axes.data(), k, found[0], rows, scratch);
+    int o = side_of.sign(points_.point(x));
+    if (o == 0) o = orient(axes.data(), k, found[0], rows, scratch);
     if (o == 0) {
       scan.on.push_back(x);
       continue;
