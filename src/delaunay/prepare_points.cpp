@@ -12,6 +12,7 @@
 #include "geometry/error_bound.hpp"
 #include "util/for_ranges.hpp"
 #include "util/parallel_sort.hpp"
+#include "util/uninitialized_vector.hpp"
 
 namespace drange::engine {
 
@@ -102,7 +103,7 @@ void mark_dyadic(const std::vector<double>& coords, PointStore& store, Team& tea
 // rank) and its coordinates, rank by rank. Each exact copy goes to `duplicates` with the first
 // input index of its coordinates as the original.
 struct DistinctPoints {
-  std::vector<std::int64_t> index;
+  util::UninitializedVector<std::int64_t> index;
   std::vector<double> coords;
 };
 
@@ -110,7 +111,7 @@ struct DistinctPoints {
 DistinctPoints distinct_points(PointsView input, std::vector<Duplicate>& duplicates, Team& team) {
   const int d = input.dim;
   DistinctPoints distinct;
-  std::vector<std::int64_t>& lex = distinct.index;
+  util::UninitializedVector<std::int64_t>& lex = distinct.index;
   lex.resize(input.n);
   std::iota(lex.begin(), lex.end(), 0);
   const auto first_coordinate = [&](std::int64_t i) { return input.point(static_cast<std::size_t>(i))[0]; };
@@ -149,7 +150,7 @@ DistinctPoints distinct_points_fixed(PointsView input, std::vector<Duplicate>& d
     double x[D];
     std::int64_t index;
   };
-  std::vector<Item> items(input.n);
+  util::UninitializedVector<Item> items(input.n);
   for_ranges(input.n, team, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       std::copy_n(input.point(i), D, items[i].x);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "util/select_nth.hpp"
+#include "util/uninitialized_vector.hpp"
 
 namespace drange::spatial {
 
@@ -122,7 +123,7 @@ int box_of(const Item* items, std::int32_t begin, std::int32_t end, double* lo, 
 
 template <int D>
 void KdTree::build_fixed(const double* coords, std::int32_t n, int leaf_size, double* reordered, int threads) {
-  std::vector<Item<D>> items(static_cast<std::size_t>(n));
+  util::UninitializedVector<Item<D>> items(static_cast<std::size_t>(n));
   for (std::int32_t i = 0; i < n; ++i) {
     Item<D>& item = items[static_cast<std::size_t>(i)];
     std::copy_n(coords + static_cast<std::size_t>(i) * D, D, item.x);

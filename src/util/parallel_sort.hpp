@@ -25,9 +25,9 @@ namespace drange::util {
 // Piece p writes the outputs [k_p, k_{p+1}); it starts where the first k_p outputs took i
 // elements of a and k_p - i of b, found by binary search (`less` is a strict total order: the
 // split is unique).
-template <class T, class Less>
-void merge_piece(const std::vector<T>& values, std::size_t begin_a, std::size_t end_a, std::size_t end_b,
-                 std::vector<T>& out, std::size_t piece, std::size_t pieces, Less less) {
+template <class Vector, class Less>
+void merge_piece(const Vector& values, std::size_t begin_a, std::size_t end_a, std::size_t end_b, Vector& out,
+                 std::size_t piece, std::size_t pieces, Less less) {
   const std::size_t size_a = end_a - begin_a, size_b = end_b - end_a, total = size_a + size_b;
   // The number of elements of a among the first k outputs.
   auto taken_from_a = [&](std::size_t k) {
@@ -49,8 +49,9 @@ void merge_piece(const std::vector<T>& values, std::size_t begin_a, std::size_t 
 // Sorts `values` by `less`, a strict total order: consecutive parts sorted at the same time,
 // then merged pairwise, each merge cut into pieces so that every thread has work in the last
 // rounds too.
-template <class T, class Less>
-void sort_in_parallel(std::vector<T>& values, Less less, engine::Team& team) {
+// `Vector`: a std::vector of any allocator (UninitializedVector, say), as in sort_by_key.
+template <class Vector, class Less>
+void sort_in_parallel(Vector& values, Less less, engine::Team& team) {
   constexpr std::size_t kMinPart = std::size_t{1} << 15;
   const auto threads = static_cast<std::size_t>(team.threads());
   const std::size_t parts = std::min(threads, values.size() / kMinPart);
@@ -60,9 +61,9 @@ void sort_in_parallel(std::vector<T>& values, Less less, engine::Team& team) {
   }
   std::vector<std::size_t> bounds;  // part i is [bounds[i], bounds[i + 1])
   for (std::size_t i = 0; i <= parts; ++i) bounds.push_back(values.size() * i / parts);
-  const auto at = [](std::vector<T>& v, std::size_t i) { return v.begin() + static_cast<std::ptrdiff_t>(i); };
+  const auto at = [](Vector& v, std::size_t i) { return v.begin() + static_cast<std::ptrdiff_t>(i); };
   team.for_each(parts, [&](std::size_t i) { std::sort(at(values, bounds[i]), at(values, bounds[i + 1]), less); });
-  std::vector<T> merged(values.size());
+  Vector merged(values.size());
   while (bounds.size() > 2) {
     const std::size_t merges = (bounds.size() - 1) / 2, pieces = std::max<std::size_t>(1, threads / merges);
     team.for_each(merges * pieces, [&](std::size_t task) {
@@ -87,8 +88,9 @@ void sort_in_parallel(std::vector<T>& values, Less less, engine::Team& team) {
 // later bucket, and sorting each bucket sorts the whole. Buckets of clustered keys are large
 // and sorted as sort_in_parallel would, so no input is slower than that by much; keys too
 // spread out for a finite scale (or all equal) go to sort_in_parallel directly.
-template <class T, class Key, class Less>
-void sort_by_key(std::vector<T>& values, Key key, Less less, engine::Team& team) {
+template <class Vector, class Key, class Less>
+void sort_by_key(Vector& values, Key key, Less less, engine::Team& team) {
+  using T = typename Vector::value_type;
   constexpr std::size_t kPerBucket = 16;   // items per bucket on evenly spread keys
   constexpr std::size_t kMinItems = 4096;  // below, one std::sort is as fast
   const std::size_t n = values.size();
@@ -153,7 +155,7 @@ void sort_by_key(std::vector<T>& values, Key key, Less less, engine::Team& team)
     sort_in_parallel(values, less, team);
     return;
   }
-  std::vector<T> sorted(n);
+  Vector sorted(n);
   team.for_each(parts, [&](std::size_t p) {
     Part& mine = part[p];
     for (std::size_t i = mine.begin; i < mine.end; ++i) sorted[mine.count[bucket_of(values[i])]++] = values[i];
