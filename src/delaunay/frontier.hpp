@@ -72,8 +72,8 @@ class Frontier {
   bool pop(std::int32_t* ids, FacetInfo& info, std::int64_t window = -1) { return queue_.pop(ids, info, window); }
   void release(const FacetInfo& info) { queue_.release(info.owner.entry); }
   // Asks the cache for the table slot that a later take() or close() of this facet reads,
-  // when the table has outgrown the cache (a small frontier, as in 2D, stays cached, and the
-  // prefetches would only cost: 2D 1M search +2%).
+  // when the table has outgrown the cache (a small frontier, as in 2D, stays cached, and
+  // there the prefetches would only add work).
   void prefetch(const FacetInfo& info) const {
     if (table_outgrows_cache()) table_.prefetch(info.hash);
   }
@@ -106,7 +106,7 @@ class Frontier {
   bool table_empty() const { return table_.size() == 0; }
 
  private:
-  // Half a typical L2 cache (this machine's: 1 MiB per core).
+  // About a core's L2 cache (1 MiB on this project's machine).
   static constexpr std::size_t kCachedTableBytes = std::size_t{1} << 20;
   bool table_outgrows_cache() const { return table_.memory_bytes() > kCachedTableBytes; }
 

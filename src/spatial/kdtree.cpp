@@ -252,7 +252,7 @@ std::int32_t KdTree::build_node(const double* coords, std::int32_t begin, std::i
     return comes_before(coords[static_cast<std::size_t>(a) * dim_ + axis], a, coords[static_cast<std::size_t>(b) * dim_ + axis], b);
   });
   const double split = point(middle)[axis];
-  // Left: [begin, middle), all <= split after nth_element; the boxes are tight, so a
+  // Left: [begin, middle), all <= split after the selection; the boxes are tight, so a
   // coordinate equal to split on both sides is harmless.
   const bool children = emit && !leaf;  // else only the order is refined (see kOrderLeafSize)
   if (children) {

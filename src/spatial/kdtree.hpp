@@ -89,7 +89,7 @@ class KdTree {
   void build_any(const double* coords, std::int32_t n, int dim, int leaf_size, double* reordered, int threads = 1);
   // build_items over up to 2^depth threads: the root's split here, then each half built by a
   // part (a KdTree numbering its own nodes from 0) on a thread of its own, and spliced back in
-  // preorder. Every nth_element sees the same range as in the serial build: the same tree.
+  // preorder. Every selection sees the same range as in the serial build: the same tree.
   template <class Item>
   void build_items_parallel(Item* items, std::int32_t begin, std::int32_t end, int leaf_size, int depth);
   // Appends `part` (a subtree whose root's parent is `parent`) after the nodes so far; returns
