@@ -234,9 +234,9 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       options_(options),
       d_(points.dim),
       orient_gamma_(geometry::gamma_bound(geometry::laplace_roundings(points.dim, 1))),
-      box_orient_gamma_(orient_gamma_ + 2.01 * geometry::gamma_bound(geometry::laplace_roundings(points.dim - 1, 1))),
       lifted_gamma_(geometry::gamma_bound(
           geometry::laplace_roundings(points.dim + 1, geometry::lifted_entry_roundings(points.dim)))),
+      box_orient_gamma_(orient_gamma_ + 2.01 * geometry::gamma_bound(geometry::laplace_roundings(points.dim - 1, 1))),
       minors_(points.dim + 1),
       seeds_(seeds),
       blocks_(points, options.use_kdtree && points.dim >= kMinBlockDimension) {
