@@ -82,14 +82,30 @@ class Frontier {
     std::uint32_t hash = 0;
     if (table_outgrows_cache() && queue_.hash_ahead(ahead, hash)) table_.prefetch(hash);
   }
+  // Asks the cache for the table slots that close() reads for a simplex's other facets
+  // (`derived`: derive_other_facets' block), so that work done before close() hides the misses.
+  void prefetch_derived(const std::int32_t* derived) const {
+    if (!table_outgrows_cache()) return;
+    const std::int32_t* hash = derived + d_ * d_ + d_;
+    for (int f = 0; f < d_; ++f) table_.prefetch(static_cast<std::uint32_t>(hash[f]));
+  }
   // A facet's turn, in queue order: false when it was closed while it waited (it needs no
   // search); otherwise it leaves the table, and close() must follow with its search's result.
+  // Statistics::max_open_facets counts the open facets as each turn begins.
   bool take(const std::int32_t* ids, const FacetInfo& info, bool closed) {
-    stats_.max_open_facets = std::max(stats_.max_open_facets, table_.size());
+    count_open_facets(0);
+    return take_uncounted(ids, info, closed);
+  }
+  // take() for a turn taken before the previous turn's simplex is recorded (the spatial serial
+  // loop): its count comes after that recording, by count_open_facets(1 if it left the table).
+  bool take_uncounted(const std::int32_t* ids, const FacetInfo& info, bool closed) {
     if (closed) return false;
     if (info.owner.simplex < 0 || table_.remove(ids, info.hash)) return true;
     if (mark_closures_) throw std::logic_error("delaunay: a queued facet is not open");
     return false;  // closed while it waited
+  }
+  void count_open_facets(std::size_t taken) {
+    stats_.max_open_facets = std::max(stats_.max_open_facets, table_.size() + taken);
   }
   // Threads > 1: mark the facets that close while they wait (in the queue, or in
   // closed_after_pop() once they left it). Queues whose marks are cheap (FacetQueue) are marked
@@ -145,8 +161,7 @@ void Frontier<Queue>::close(const std::int32_t* ids, const FacetInfo& info, std:
   const int d = d_;
   const std::int32_t* open_side = derived + d * d;
   const std::int32_t* hash = open_side + d;
-  if (table_outgrows_cache())
-    for (int f = 0; f < d; ++f) table_.prefetch(static_cast<std::uint32_t>(hash[f]));
+  prefetch_derived(derived);
   for (int f = 0; f < d; ++f) {
     const std::int32_t* other = derived + f * d;
     engine::FacetOwner seen{};
