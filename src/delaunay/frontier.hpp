@@ -89,6 +89,13 @@ class Frontier {
     const std::int32_t* hash = derived + d_ * d_ + d_;
     for (int f = 0; f < d_; ++f) table_.prefetch(static_cast<std::uint32_t>(hash[f]));
   }
+  // Asks the cache for the neighbour entry of the facet's owner that close() writes: the owner
+  // was found many turns ago, and its row has usually left the cache.
+  void prefetch_owner(const FacetInfo& info) const {
+    if (info.owner.simplex < 0) return;
+    __builtin_prefetch(&neighbors_[static_cast<std::size_t>(info.owner.simplex) * static_cast<std::size_t>(width_) +
+                                   static_cast<std::size_t>(info.owner.face)], 1);
+  }
   // A facet's turn, in queue order: false when it was closed while it waited (it needs no
   // search); otherwise it leaves the table, and close() must follow with its search's result.
   // Statistics::max_open_facets counts the open facets as each turn begins.

@@ -90,6 +90,7 @@ void search_serially(Frontier<FacetQueue>& frontier, engine::FacetSearch& search
     const bool closed = frontier.pop(ids.data(), info);
     frontier.prefetch_ahead(kPrefetchAhead);
     if (!frontier.take(ids.data(), info, closed)) continue;
+    frontier.prefetch_owner(info);
     const std::int32_t apex = search.find_apex(ids.data(), info.sigma, totals.counters);
     if (apex >= 0) derive_other_facets(ids.data(), info.sigma, apex, d, derived.data());
     frontier.close(ids.data(), info, apex, derived.data());
@@ -141,6 +142,7 @@ void search_serially(Frontier<engine::SpatialFacetQueue>& frontier, engine::Face
     // closes), is taken and searched before that recording.
     const bool early = turn < filled && !(late.waiting && late.apex >= 0 && is_derived(facet, info[s].hash, derived.data(), d));
     bool taken = early && frontier.take_uncounted(facet, info[s], closed[s] != 0);
+    if (taken) frontier.prefetch_owner(info[s]);
     std::int32_t apex = taken ? search.find_apex(facet, info[s].sigma, totals.counters) : -1;
     record_late();
     if (early) frontier.count_open_facets(taken ? 1 : 0);
@@ -155,7 +157,10 @@ void search_serially(Frontier<engine::SpatialFacetQueue>& frontier, engine::Face
     if (turn + kPrefetchAhead < filled) frontier.prefetch(info[(turn + kPrefetchAhead) & (ahead - 1)]);
     if (!early) {
       taken = frontier.take(facet, info[s], closed[s] != 0);
-      if (taken) apex = search.find_apex(facet, info[s].sigma, totals.counters);
+      if (taken) {
+        frontier.prefetch_owner(info[s]);
+        apex = search.find_apex(facet, info[s].sigma, totals.counters);
+      }
     }
     if (!taken) continue;
     if (apex >= 0) {
