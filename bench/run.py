@@ -47,17 +47,16 @@ STANDARD = [
 ]
 # Rows for drange alone: the uniform input of the 3D grid's size, for the grid-to-uniform ratio.
 DRANGE_ONLY = {("uniform", 216000, 3)}
-# The d = 7 target of issue 4: sizes where the peers take over 10 minutes (`--beyond`, with a
-# 600 s limit). Qhull took 67 s at 1 000 points and over 300 s at 2 000 (the issue's figure):
-# over 600 s at 4 500. CGAL dD static took 39.8 s at 1 000 and 424 s at 4 500 (about n^1.6):
-# so the row of 7 000. A peer that timed out on uniform input is not run on more points.
-# The d = 8 target, measured on one thread (seed 1, 300 / 600 / 1 000 / 1 500 points): CGAL dD
-# static took 34.2, 148 and 375 s up to 1 000 (n^2.1, then n^1.8) and over 600 s at 1 500; Qhull
-# 60.6 and 291 s at 300 and 600 (n^2.3) and over 600 s at 1 000. drange took 14.1, 55.8, 142 and
-# 267 s (n^2.0, n^1.8, n^1.55; the simplices grew as n^1.7, n^1.6, n^1.5: 30.7M at 1 500), peak
-# RSS 405, 1 135, 2 790 and 4 742 MiB (CGAL 389, 1 210, 2 666 up to 1 000). So the rows of 1 000
-# (Qhull over 600 s, CGAL not) and 1 500 (CGAL over 600 s too; Qhull skipped after 1 000).
-BEYOND = [("uniform", 4500, 7), ("uniform", 7000, 7), ("uniform", 1000, 8), ("uniform", 1500, 8)]
+# The d = 7 and d = 8 targets of issue 4: sizes where the peers take over 10 minutes
+# (`--beyond`, with a 600 s limit). A peer that timed out on uniform input is not run on more
+# points. Measured on one thread with the runner (seed 1) on the AMD EPYC machine, 2026-11-25:
+# CGAL dD static took 272 s on 7D 4 500 points and 532 s on 7 000 (about n^1.5), over 600 s on
+# 9 000; 496 s on 8D 1 500, over 600 s on 2 000. (On the earlier Intel machine it had passed
+# 600 s already at 7D 7 000 and 8D 1 500, the rows this set had then.) Qhull took over 600 s
+# on 7D 4 500 and 8D 1 500 (over 300 s on 7D 2 000 in the issue's figures). drange took 121,
+# 224 and 333 s on 7D 4 500, 7 000 and 9 000 points, 194 and 301 s on 8D 1 500 and 2 000, with
+# a peak of 4.5 and 6.3 GiB on the largest.
+BEYOND = [("uniform", 4500, 7), ("uniform", 9000, 7), ("uniform", 1500, 8), ("uniform", 2000, 8)]
 QUICK = [("uniform", 100000, 2), ("grid", 90000, 2), ("uniform", 100000, 3), ("uniform", 10000, 4), ("uniform", 3000, 5)]
 # Ablation: (distribution, n, d, variants).
 ABLATION = [

@@ -9,7 +9,7 @@
 #   (none)       the standard set and the ablation          -> bench/results.md
 #   --quick      a subset, under 2 minutes on 2 cores        -> bench/results-quick.md
 #   --ablation   the ablation table alone                   -> bench/results-ablation.md
-#   --beyond     7D 4 500 and 7 000 points, 8D 1 000 and 1 500, 600 s limit (about 70 min)
+#   --beyond     7D 4 500 and 9 000 points, 8D 1 500 and 2 000, 600 s limit (about 70 min)
 #                                                           -> bench/results-beyond.md
 #   --micro      also run the Google Benchmark microbenchmarks (appended to the file)
 set -euo pipefail
