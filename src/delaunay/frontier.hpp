@@ -84,6 +84,7 @@ class Frontier {
   }
   // Asks the cache for the table slots that close() reads for a simplex's other facets
   // (`derived`: derive_other_facets' block), so that work done before close() hides the misses.
+  // The callers of close() ask, each as early as its order allows.
   void prefetch_derived(const std::int32_t* derived) const {
     if (!table_outgrows_cache()) return;
     const std::int32_t* hash = derived + d_ * d_ + d_;
@@ -168,7 +169,6 @@ void Frontier<Queue>::close(const std::int32_t* ids, const FacetInfo& info, std:
   const int d = d_;
   const std::int32_t* open_side = derived + d * d;
   const std::int32_t* hash = open_side + d;
-  prefetch_derived(derived);
   for (int f = 0; f < d; ++f) {
     const std::int32_t* other = derived + f * d;
     engine::FacetOwner seen{};

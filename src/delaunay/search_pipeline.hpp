@@ -237,6 +237,7 @@ class SearchPipeline {
     }
     if (result.outcome != Outcome::searched) throw std::logic_error("delaunay: a facet predicted closed is open");
     totals.add(engine::SearchCounters{result.calls, result.points_tested, result.candidates}, result.exact);
+    if (result.apex >= 0) frontier_.prefetch_derived(derived(s));
     frontier_.close(ids(s), info_[s], result.apex, derived(s));
     for (std::uint64_t entry : frontier_.closed_after_pop()) closed_[slot(entry)].store(true, std::memory_order_release);
     frontier_.closed_after_pop().clear();

@@ -92,7 +92,10 @@ void search_serially(Frontier<FacetQueue>& frontier, engine::FacetSearch& search
     if (!frontier.take(ids.data(), info, closed)) continue;
     frontier.prefetch_owner(info);
     const std::int32_t apex = search.find_apex(ids.data(), info.sigma, totals.counters);
-    if (apex >= 0) derive_other_facets(ids.data(), info.sigma, apex, d, derived.data());
+    if (apex >= 0) {
+      derive_other_facets(ids.data(), info.sigma, apex, d, derived.data());
+      frontier.prefetch_derived(derived.data());
+    }
     frontier.close(ids.data(), info, apex, derived.data());
   }
   totals.exact = geometry::exact_evaluations() - exact_before;
