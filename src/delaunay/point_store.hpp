@@ -10,15 +10,18 @@
 
 #include "delaunay/sphere_shell.hpp"
 #include "spatial/kdtree.hpp"
+#include "util/uninitialized_vector.hpp"
 
 namespace drange::engine {
 
 struct PointStore {
   int dim = 0;
   std::int32_t size = 0;
-  std::vector<double> coords;              // size * dim, in id order
-  std::vector<std::int64_t> rank;          // lexicographic rank of each id
-  std::vector<std::int64_t> input_index;   // input index of each id
+  // The arrays are filled in full by prepare_points, on its threads: left uninitialised until
+  // then, their pages are first touched there (2D 1M: 32 MB not zeroed by one thread first).
+  util::UninitializedVector<double> coords;             // size * dim, in id order
+  util::UninitializedVector<std::int64_t> rank;         // lexicographic rank of each id
+  util::UninitializedVector<std::int64_t> input_index;  // input index of each id
   spatial::KdTree tree;                    // over the ids
   // True when the coordinates were scaled below 1 in magnitude (prepare_points.cpp): then every
   // entry of the search's determinants is below 2^6 and no underflow can escape the error bounds

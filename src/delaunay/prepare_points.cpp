@@ -40,7 +40,7 @@ void check_input(PointsView input) {
 // is exact unless it leaves the normal range. Bringing the largest magnitude near 1 keeps the
 // squared norms of the lifted rows away from overflow (coordinates near 1e300) and underflow
 // (near 1e-300), where the floating-point filters cannot decide and every test would be exact.
-bool scale_by_power_of_two(std::vector<double>& coords, Team& team) {
+bool scale_by_power_of_two(util::UninitializedVector<double>& coords, Team& team) {
   // Minimum and maximum are exact: the split does not change them.
   std::vector<double> largest_of(team.threads() * 4 + 1, 0.0), smallest_of(largest_of.size(), std::numeric_limits<double>::infinity());
   const std::size_t ranges = for_ranges(coords.size(), team, [&](std::size_t i, std::size_t begin, std::size_t end) {
@@ -78,7 +78,7 @@ bool scale_by_power_of_two(std::vector<double>& coords, Team& team) {
 
 // Finds the common power-of-two unit of all coordinates; a dyadic point set has its largest
 // magnitude below 2^50 units, so that every difference of two coordinates is exact.
-void mark_dyadic(const std::vector<double>& coords, PointStore& store, Team& team) {
+void mark_dyadic(const util::UninitializedVector<double>& coords, PointStore& store, Team& team) {
   std::vector<int> unit_of(team.threads() * 4 + 1, std::numeric_limits<int>::max());
   std::vector<double> largest_of(unit_of.size(), 0.0);
   const std::size_t ranges = for_ranges(coords.size(), team, [&](std::size_t i, std::size_t begin, std::size_t end) {
@@ -104,7 +104,7 @@ void mark_dyadic(const std::vector<double>& coords, PointStore& store, Team& tea
 // input index of its coordinates as the original.
 struct DistinctPoints {
   util::UninitializedVector<std::int64_t> index;
-  std::vector<double> coords;
+  util::UninitializedVector<double> coords;
 };
 
 // Any d: the input indices are sorted, then the points copied in that order.
@@ -204,13 +204,13 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   PointStore store;
   store.dim = d;
   store.size = static_cast<std::int32_t>(kept);
-  std::vector<double> by_rank = std::move(distinct.coords);
+  util::UninitializedVector<double> by_rank = std::move(distinct.coords);
   store.scaled = scale_by_power_of_two(by_rank, team);
   mark_dyadic(by_rank, store, team);
   store.tree.build_and_reorder(by_rank.data(), store.size, d, leaf_size, team.threads());
   store.coords = std::move(by_rank);  // now in tree order
   store.shell = fit_sphere_shell(store.coords.data(), store.size, d, store.tree);
-  const std::vector<std::int32_t>& order = store.tree.order();
+  const auto& order = store.tree.order();
   store.rank.resize(kept);
   store.input_index.resize(kept);
   for_ranges(order.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {

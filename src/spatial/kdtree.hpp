@@ -25,6 +25,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "util/uninitialized_vector.hpp"
+
 namespace drange::spatial {
 
 class KdTree {
@@ -46,7 +48,7 @@ class KdTree {
   // caller that renumbers its points (saves it a copy).
   void build_and_reorder(double* coords, std::int32_t n, int dim, int leaf_size = 8, int threads = 1);
 
-  const std::vector<std::int32_t>& order() const { return order_; }
+  const util::UninitializedVector<std::int32_t>& order() const { return order_; }
   // The leaf that holds tree position `position` (a point id of the caller, after renumbering).
   std::int32_t leaf_of(std::int32_t position) const { return leaf_of_[static_cast<std::size_t>(position)]; }
   std::int32_t parent(std::int32_t node) const { return parent_[static_cast<std::size_t>(node)]; }
@@ -126,11 +128,13 @@ class KdTree {
     return true;
   }
   int dim_ = 0;
-  std::vector<std::int32_t> order_;
+  // order_ and leaf_of_ are filled by the build in full (each position lies in one leaf); left
+  // uninitialised until then, their pages are first touched by the threads that fill them.
+  util::UninitializedVector<std::int32_t> order_;
   std::vector<Node> nodes_;
   std::vector<double> boxes_;
   std::vector<std::int32_t> parent_;   // per node; -1 for the root
-  std::vector<std::int32_t> leaf_of_;  // per tree position
+  util::UninitializedVector<std::int32_t> leaf_of_;  // per tree position
   // Where the build writes each point's leaf: leaf_of_, or the whole tree's array for a part
   // built in parallel (parts write disjoint ranges, in their own numbering, fixed by splice).
   std::int32_t* leaf_out_ = nullptr;
