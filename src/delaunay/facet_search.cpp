@@ -89,6 +89,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   // locals (test() may change it, so the loop stops at the first point that passes). Points
   // are contiguous: a leaf's ids are consecutive.
   std::int32_t first_in_ball(std::int32_t id, std::int32_t end) const {
+    if constexpr (D == 3) id = skip_pairs_outside_ball(id, end);
     const int d = dim();
     std::array<double, kMaxRow> centre;
     for (int k = 0; k < d; ++k) centre[static_cast<std::size_t>(k)] = centre_[static_cast<std::size_t>(k)];
@@ -102,6 +103,26 @@ class SearchKernel final : public FacetSearch::Kernel {
       if (!(distance2 > reach2)) return id;
     }
     return end;
+  }
+  // D = 3: the first pair of points (id, id + 1), (id + 2, id + 3), ... of which either is in
+  // the ball, or the last odd point, or end. A pair's 6 coordinates are 3 pairs of doubles: the
+  // two points' squared distances are summed lane by lane, each as first_in_ball sums it (x,
+  // then y, then z: the same points pass), with one branch per pair instead of one per point.
+  // 3D 1M time_search -3%, 200k -1.3% (uniform) to -1.9% (gaussian). Not in 2D, where it was
+  // 5% slower (fewer points scanned per leaf); nor four points per branch in 3D: 10% slower
+  // (a point in the ball is usually met early, and the ball then shrinks).
+  std::int32_t skip_pairs_outside_ball(std::int32_t id, std::int32_t end) const {
+    const Pair reach2 = {ball_reach2_, ball_reach2_};
+    const Pair cxy = {centre_[0], centre_[1]}, czx = {centre_[2], centre_[0]}, cyz = {centre_[1], centre_[2]};
+    for (const double* x = points_.point(id); id + 2 <= end; id += 2, x += 6) {
+      const Pair p = load_pair(x) - cxy, q = load_pair(x + 2) - czx, r = load_pair(x + 4) - cyz;  // (x0, y0), (z0, x1), (y1, z1)
+      const Pair sp = p * p, sq = q * q, sr = r * r;
+      const Pair sum = (__builtin_shufflevector(sp, sq, 0, 3) + __builtin_shufflevector(sp, sr, 1, 2)) +
+                       __builtin_shufflevector(sq, sr, 0, 3);
+      const auto outside = sum > reach2;  // NaN: not outside, as in first_in_ball
+      if (!(outside[0] & outside[1])) return id;
+    }
+    return id;
   }
   // The leaf's points one by one: the ball test (first_in_ball), or the box test while there is
   // no ball.
