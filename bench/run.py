@@ -122,6 +122,36 @@ def run_one(build, peer, path, timeout, mem_limit, threads=1, variant=None):
     return result
 
 
+def run_median(build, peer, path, timeout, mem_limit, repeat, threads=1, variant=None):
+    """run_one `repeat` times; the run of median time, with every run's seconds under "runs". A first
+    run that is not ok (timeout, OOM, n/a) is not repeated; a later failure is the result."""
+    first = run_one(build, peer, path, timeout, mem_limit, threads, variant)
+    if repeat <= 1 or first.get("status") != "ok":
+        return first
+    runs = [first] + [run_one(build, peer, path, timeout, mem_limit, threads, variant) for _ in range(repeat - 1)]
+    failed = [r for r in runs if r.get("status") != "ok"]
+    if failed:
+        return failed[0]
+    median = dict(sorted(runs, key=lambda r: float(r["seconds"]))[(len(runs) - 1) // 2])
+    median["runs"] = " ".join(r["seconds"] for r in runs)
+    return median
+
+
+def selected_rows(rows, spec):
+    """The rows named in spec ("dist:d:n,..."), which must all be in `rows`."""
+    chosen = []
+    for item in spec.split(","):
+        try:
+            dist, d, n = item.split(":")
+            row = (dist, int(n), int(d))
+        except ValueError:
+            sys.exit(f"bench/run.py: --rows: '{item}' is not DIST:D:N (e.g. uniform:5:20000)")
+        if row not in rows:
+            sys.exit(f"bench/run.py: --rows: '{item}' is not a row of this set")
+        chosen.append(row)
+    return chosen
+
+
 def mib(r):
     return f"{int(r['peak_rss']) / 2**20:.0f}" if "peak_rss" in r else ""
 
@@ -183,6 +213,10 @@ def main():
     ap.add_argument("--beyond", action="store_true",
                     help="the 7D and 8D rows where the peers take over 10 minutes (about 70 min)")
     ap.add_argument("--no-ablation", action="store_true")
+    ap.add_argument("--repeat", type=int, default=1,
+                    help="run each measurement N times and report the median (odd N: the middle run)")
+    ap.add_argument("--rows", default="",
+                    help="only these rows of the set, as DIST:D:N separated by commas (uniform:5:20000,...)")
     ap.add_argument("--timeout", type=int, default=None)
     ap.add_argument("--mem-limit-gib", type=float, default=16)
     ap.add_argument("--command", default="")
@@ -196,6 +230,11 @@ def main():
     os.makedirs(args.data, exist_ok=True)
     rows = QUICK if args.quick else BEYOND if args.beyond else STANDARD
     ablation = QUICK_ABLATION if args.quick else [] if args.beyond else ABLATION
+    if args.repeat < 1:
+        sys.exit("bench/run.py: --repeat must be at least 1")
+    if args.rows:
+        rows = selected_rows(rows, args.rows)
+        ablation = []
     if args.ablation_only:
         rows = []
     if args.no_ablation:
@@ -234,7 +273,7 @@ def main():
         for dist, n, d in rows:
             path = input_file(args.build, args.data, dist, n, d)
             log(f"{dist} {d}D {n}")
-            ours = run_one(args.build, "drange", path, own_timeout, mem_limit)
+            ours = run_median(args.build, "drange", path, own_timeout, mem_limit, args.repeat)
             results.append((dist, n, d, "drange", ours))
             label = grid_label(dist, n, d)
             cells = [dist + (f" {label}" if label else ""), str(d), f"{n:,}".replace(",", " "),
@@ -248,7 +287,7 @@ def main():
             # All cores: the same output (tests/threads_test.cpp), so only the time is new.
             speedup = ""
             if d <= MAX_THREADED_D:
-                threaded = run_one(args.build, "drange", path, own_timeout, mem_limit, threads=cores)
+                threaded = run_median(args.build, "drange", path, own_timeout, mem_limit, args.repeat, threads=cores)
                 results.append((dist, n, d, f"drange:threads={cores}", threaded))
                 if ours.get("status") == "ok" and threaded.get("status") == "ok":
                     speedup = f"{float(ours['seconds']) / max(float(threaded['seconds']), 1e-9):.2f}"
@@ -269,7 +308,7 @@ def main():
                     log(f"  {p:12s} skipped (timed out or out of memory on a smaller uniform input)")
                 else:
                     threads = 2 if p == "cgal3-par" else 1
-                    r = run_one(args.build, p, path, timeout, mem_limit, threads=threads)
+                    r = run_median(args.build, p, path, timeout, mem_limit, args.repeat, threads=threads)
                     if r.get("status") in ("timeout", "oom") and dist == "uniform":
                         failed_at.setdefault(p, []).append((d, n))
                 results.append((dist, n, d, p, r))
@@ -287,7 +326,7 @@ def main():
             path = input_file(args.build, args.data, dist, n, d)
             log(f"ablation {dist} {d}D {n}")
             for v in variants:
-                r = run_one(args.build, "drange", path, timeout, mem_limit, variant=v)
+                r = run_median(args.build, "drange", path, timeout, mem_limit, args.repeat, variant=v)
                 results.append((dist, n, d, f"drange:{v}", r))
                 if r.get("status") == "ok":
                     abl.append(f"| {dist} | {d} | {n} | {v} | {secs(r, timeout)} | {float(r['search_seconds']):.3f} | "
@@ -298,6 +337,9 @@ def main():
     load_after = open("/proc/loadavg").read().split()[:3]
     elapsed = time.monotonic() - started
     out.append(f"- Load average after: {' '.join(load_after)}; the whole run took {elapsed / 60:.1f} min")
+    if args.repeat > 1:
+        out.append(f"- Each time is the median of {args.repeat} runs of the same process (a run that timed out or "
+                   f"ran out of memory is not repeated); the CSV lists every run's seconds")
     out.append("")
     out.append("Times are construction only (file reading excluded; conversion to each peer's point type "
                "excluded), one process per measurement, one thread except `CGAL 3D par` (2 threads) and "
@@ -325,11 +367,13 @@ def main():
     with open(args.output, "w") as f:
         f.write("\n".join(out) + "\n")
     with open(os.path.splitext(args.output)[0] + ".csv", "w") as f:
-        f.write("distribution,n,d,peer,status,simplices,seconds,peak_rss,input_rss,calls_per_simplex,search_seconds\n")
+        f.write("distribution,n,d,peer,status,simplices,seconds,peak_rss,input_rss,calls_per_simplex,search_seconds,"
+                "runs\n")
         for dist, n, d, p, r in results:
             f.write(",".join(str(x) for x in [dist, n, d, p, r.get("status", ""), r.get("simplices", ""),
                                                r.get("seconds", ""), r.get("peak_rss", ""), r.get("input_rss", ""),
-                                               r.get("calls_per_simplex", ""), r.get("search_seconds", "")]) + "\n")
+                                               r.get("calls_per_simplex", ""), r.get("search_seconds", ""),
+                                               r.get("runs", r.get("seconds", ""))]) + "\n")
     log(f"wrote {args.output} ({elapsed / 60:.1f} min)")
 
 

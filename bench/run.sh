@@ -4,7 +4,8 @@
 # generates the inputs into bench/data (git-ignored) and runs every (input, peer) pair in a
 # process of its own, with a timeout; writes one Markdown table (and a .csv of the raw lines).
 #
-#   bench/run.sh [--quick] [--ablation] [--beyond] [--micro] [--timeout S] [-o FILE]
+#   bench/run.sh [--quick] [--ablation] [--beyond] [--micro] [--timeout S] [--repeat N]
+#                [--rows DIST:D:N,...] [-o FILE]
 #
 #   (none)       the standard set and the ablation          -> bench/results.md
 #   --quick      a subset, under 2 minutes on 2 cores        -> bench/results-quick.md
@@ -12,11 +13,14 @@
 #   --beyond     7D 4 500 and 9 000 points, 8D 1 500 and 2 000, 600 s limit (about 70 min)
 #                                                           -> bench/results-beyond.md
 #   --micro      also run the Google Benchmark microbenchmarks (appended to the file)
+#   --repeat N   each measurement N times, the median reported (the machine's noise: one run
+#                of a cell moved by up to 8% between two runs of the set)
+#   --rows ...   only these rows of the set, no ablation (e.g. --rows uniform:5:20000,uniform:6:5000)
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 command_line="bench/run.sh $*"
-quick=0; ablation=0; beyond=0; micro=0; output=""; timeout=()
+quick=0; ablation=0; beyond=0; micro=0; output=""; timeout=(); extra=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1 ;;
@@ -24,8 +28,10 @@ while [ $# -gt 0 ]; do
     --beyond) beyond=1 ;;
     --micro) micro=1 ;;
     --timeout) timeout=(--timeout "$2"); shift ;;
+    --repeat) extra+=(--repeat "$2"); shift ;;
+    --rows) extra+=(--rows "$2"); shift ;;
     -o) output="$2"; shift ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
@@ -42,7 +48,7 @@ build="$root/build-bench"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DDRANGE_BUILD_BENCH=ON -DDRANGE_BUILD_TESTS=OFF >/dev/null
 cmake --build "$build" -j"$(nproc)" >&2
 
-args=(--build "$build" --data "$root/bench/data" --command "$command_line" "${timeout[@]}")
+args=(--build "$build" --data "$root/bench/data" --command "$command_line" "${timeout[@]}" "${extra[@]}")
 if [ $quick -eq 1 ]; then
   args+=(--quick); output="${output:-$root/bench/results-quick.md}"
 elif [ $beyond -eq 1 ]; then
