@@ -812,8 +812,19 @@ int search_leaf_size(int dim) {
   //   6D 2k     9.99 s ->    -, 7.72, 7.82, 7.85 (one run)
   //   7D 1k        -   ->    -, 24.7, 22.8, 23.2 (one run)
   // Beyond the best size the time is flat up to about twice as large, then grows (the scan
-  // dominates). 8D and up were not measured and take the 7D value.
-  constexpr int kByDimension[] = {0, 0, 32, 64, 64, 64, 64, 64};
+  // dominates).
+  // From 4D on, the leaf scan has since become block by block (LeafBlocks: eight boxes of 8
+  // points tested at once, then only the blocks that meet the ball), which makes a large leaf
+  // cheap to scan, and the measurements moved. On the AMD EPYC machine, 2026-11-25, min of 3
+  // (5 where marked) interleaved runs, leaf size 64 -> 128, 256:
+  //   4D 30k    1.146 s -> 1.147, 1.126      4D 100k   4.448 -> 4.105, 4.275
+  //   5D 5k     1.623   -> 1.454, 1.449      5D 20k    8.348 -> 8.030, 7.784 (5: 7.169, 7.043)
+  //   5D 50k   20.351   -> 19.169, 19.232    6D 5k    15.663 -> 14.517, 14.717 (5: 13.484, 13.325)
+  //   7D 1k    11.146   -> 10.779, 10.547    7D 2k    32.735 -> 31.239, 30.524
+  //   8D 300   10.804   -> 10.481, 10.406    (5D 20k at 512: 8.221, against 7.924 at 256)
+  // 128 and 256 are within the noise of each other from 5D to 6D; 256 won in 7D and 8D, 128
+  // in 4D. 3D 200k at 128: 1.046 -> 1.064 s (3D has no blocks). 9D and up take the 8D value.
+  constexpr int kByDimension[] = {0, 0, 32, 64, 128, 256, 256, 256, 256};
   return dim < static_cast<int>(std::size(kByDimension)) ? kByDimension[dim] : kByDimension[std::size(kByDimension) - 1];
 }
 
