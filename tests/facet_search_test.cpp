@@ -152,4 +152,31 @@ TEST(FacetSearch, TreeSearchFindsTheScansPointWithSmallAndLargeLeaves) {
   }
 }
 
+// The leaf scan's vector loops (4D and up) at both widths: the same apex for both sides of
+// every sampled facet, and the same work, point for point (the same doubles in every lane).
+// On a CPU without AVX2 both run the two-double loops, and the test passes trivially.
+TEST(FacetSearch, WideVectorLoopsMatchTheTwoDoubleOnes) {
+  const std::array<std::size_t, 9> sizes = {0, 0, 0, 0, 600, 400, 200, 120, 90};
+  for (int d = 4; d <= 8; ++d) {
+    const PointCloud points = drange::generate_points(drange::Distribution::Uniform, sizes[static_cast<std::size_t>(d)], d, 11);
+    for (int leaf_size : {drange::engine::search_leaf_size(d), 13, 200}) {
+      const SampledFacets sample(points, leaf_size);
+      for (const auto choice : {FacetSearch::KernelChoice::FixedDimension, FacetSearch::KernelChoice::AnyDimension}) {
+        const drange::SearchOptions options = drange::search_variant("full");
+        FacetSearch wide(sample.store, options, choice, FacetSearch::VectorWidth::Widest);
+        FacetSearch narrow(sample.store, options, choice, FacetSearch::VectorWidth::TwoDoubles);
+        drange::engine::SearchCounters wide_counters, narrow_counters;
+        sample.for_each([&](std::size_t s, int opposite, const std::vector<std::int32_t>& facet, std::int32_t) {
+          for (int sigma : {1, -1})
+            ASSERT_EQ(wide.find_apex(facet.data(), sigma, wide_counters), narrow.find_apex(facet.data(), sigma, narrow_counters))
+                << "d=" << d << " leaf size " << leaf_size << " simplex " << s << " facet " << opposite << " side " << sigma;
+        });
+        EXPECT_EQ(wide_counters.calls, narrow_counters.calls) << "d=" << d << " leaf size " << leaf_size;
+        EXPECT_EQ(wide_counters.points_tested, narrow_counters.points_tested) << "d=" << d << " leaf size " << leaf_size;
+        EXPECT_EQ(wide_counters.candidates, narrow_counters.candidates) << "d=" << d << " leaf size " << leaf_size;
+      }
+    }
+  }
+}
+
 }  // namespace

@@ -55,9 +55,13 @@ class FacetSearch {
   // Which compilation of the search runs: the one for the points' dimension where there is
   // one (d = 2..8), or the one for any d (the tests compare the two).
   enum class KernelChoice { FixedDimension, AnyDimension };
+  // How wide the vector loops over a leaf's blocks (4D and up) are: Widest takes AVX2 where the
+  // CPU has it (x86-64), else two doubles (SSE2, NEON); TwoDoubles always the latter. Both
+  // give the same doubles (the tests compare them).
+  enum class VectorWidth { Widest, TwoDoubles };
   // With seeds of its own (SeedMemory), for a search on one thread.
   FacetSearch(const PointStore& points, const SearchOptions& options,
-              KernelChoice choice = KernelChoice::FixedDimension);
+              KernelChoice choice = KernelChoice::FixedDimension, VectorWidth width = VectorWidth::Widest);
   // Sharing `seeds` with the searches of other threads; `seeds` must outlive this search.
   FacetSearch(const PointStore& points, const SearchOptions& options, SeedMemory& seeds);
   ~FacetSearch();
