@@ -244,6 +244,8 @@ def main():
     load_before = open("/proc/loadavg").read().split()[:3]
     out = []
     title = "quick" if args.quick else "beyond the peers'" if args.beyond else "standard"
+    if args.rows:
+        title = "selected rows of the " + title
     out.append(f"# drange benchmark ({title} set)")
     out.append("")
     out.append(f"Command: `{args.command}`  ")
