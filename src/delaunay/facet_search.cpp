@@ -31,10 +31,11 @@ constexpr int kMaxRow = 12;
 // Two doubles as one value (GCC and Clang vector extensions: an SSE2 register on x86-64, a
 // NEON one on AArch64); a block's kLanes lanes are kPairs of them. Unaligned loads.
 using Pair = double __attribute__((vector_size(2 * sizeof(double))));
-// On x86-64, the ball's lane loops (point_distances, box_distances) also have AVX2 versions,
+// On x86-64, the ball's lane loops (points_in_reach, boxes_in_reach) also have AVX2 versions,
 // chosen at run time when the CPU has AVX2.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define DRANGE_AVX2_LANES 1
+#include <immintrin.h>
 #else
 #define DRANGE_AVX2_LANES 0
 #endif
@@ -43,6 +44,16 @@ inline Pair load_pair(const double* x) {
   Pair v;
   std::memcpy(&v, x, sizeof v);
   return v;
+}
+// The lanes whose distance is not above reach2, as a bit mask.
+inline unsigned not_above(const Pair* distance2, double reach2) {
+  const Pair reach = {reach2, reach2};
+  unsigned mask = 0;
+  for (int i = 0; i < kPairs; ++i) {
+    const auto above = distance2[i] > reach;
+    mask |= static_cast<unsigned>((above[0] & 1) | (above[1] & 2)) << (2 * i);
+  }
+  return ~mask & ((1u << LeafBlocks::kLanes) - 1);
 }
 
 template <int D>
@@ -165,10 +176,12 @@ class SearchKernel final : public FacetSearch::Kernel {
   // The lanes (kPairs pairs of a value and its absolute tree) whose sign the orientation's
   // filter certifies negative, as a bit mask.
   unsigned certified_negative(const Pair* value, const Pair* abs_tree, double factor) const;
-  // The squared distances to the ball's centre of a block's points (transposed coordinates),
-  // and lower bounds of those of the points in a group's boxes.
-  void point_distances(const double* lanes, double* distance2) const;
-  void box_distances(const double* boxes, double* distance2) const;
+  // The lanes of a block (transposed coordinates) whose squared distance to the ball's centre
+  // is not above reach2, and the blocks of a group whose box's lower bound of it is not (the
+  // empty lanes and slots, at infinity, never are), as bit masks. Masks, not distances: a
+  // branch per lane on the distance was mispredicted (5D: a fifth of the walk's samples).
+  unsigned points_in_reach(const double* lanes, double reach2) const;
+  unsigned boxes_in_reach(const double* boxes, double reach2) const;
   void consider(std::int32_t id) {
     if (in_query(points_.point(id))) test(id);
   }
@@ -240,7 +253,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   bool ball_ = false;                          // also query the ball: |x - centre|^2 <= ball_reach2_
   double ball_reach2_ = 0.0;
 #if DRANGE_AVX2_LANES
-  bool avx2_ = false;  // point_distances and box_distances in their AVX2 versions
+  bool avx2_ = false;  // points_in_reach and boxes_in_reach in their AVX2 versions
 #endif
   // With y = x - g (g the shell's centre), sigma I(p, x) = b . y + lift (|x - g|^2 - rho) +
   // constant exactly, for the exact coefficients (geometry::exact_lifted_form); these are
@@ -569,21 +582,16 @@ void SearchKernel<D>::test(std::int32_t id) {
 
 template <int D>
 void SearchKernel<D>::scan_blocks(std::int32_t begin, std::int32_t end) {
-  constexpr int kLanes = LeafBlocks::kLanes;
   const LeafBlocks::Groups groups = blocks_.groups(points_.tree.leaf_of(begin));
   for (std::int32_t group = groups.first; group < groups.first + groups.count; ++group) {
-    double box_distance2[kLanes];
-    box_distances(blocks_.boxes(group), box_distance2);
-    double reach2 = ball_reach2_;
-    for (int slot = 0; slot < kLanes; ++slot) {
-      if (box_distance2[slot] > reach2) continue;  // also the empty slots (infinity)
+    // Each new ball re-tests the slots and lanes still ahead (above the current bit), as a
+    // branch per lane on the new distances would.
+    for (unsigned slots = boxes_in_reach(blocks_.boxes(group), ball_reach2_); slots != 0; slots &= slots - 1) {
+      const int slot = __builtin_ctz(slots);
       const std::int32_t from = blocks_.begin(group, slot);
-      const std::int32_t count = blocks_.count(group, slot);
       const double* lanes = blocks_.lanes(group, slot);
-      double distance2[kLanes];
-      point_distances(lanes, distance2);
-      for (int j = 0; j < count; ++j) {
-        if (distance2[j] > reach2) continue;
+      for (unsigned in = points_in_reach(lanes, ball_reach2_); in != 0; in &= in - 1) {
+        const int j = __builtin_ctz(in);
         const std::int32_t candidate = candidate_;
         test(from + j);
         if (!ball_) {  // test() lost the ball: the rest of the leaf by the box
@@ -591,9 +599,9 @@ void SearchKernel<D>::scan_blocks(std::int32_t begin, std::int32_t end) {
           return;
         }
         if (candidate_ != candidate) {  // a new ball
-          point_distances(lanes, distance2);
-          box_distances(blocks_.boxes(group), box_distance2);
-          reach2 = ball_reach2_;
+          const unsigned ahead_of_j = ~((2u << j) - 1), ahead_of_slot = ~((2u << slot) - 1);
+          in = (points_in_reach(lanes, ball_reach2_) & ahead_of_j) | bit(j);
+          slots = (boxes_in_reach(blocks_.boxes(group), ball_reach2_) & ahead_of_slot) | bit(slot);
         }
       }
     }
@@ -696,8 +704,7 @@ namespace {
 // operations, and their order, are the two-double version's (no FMA: the target adds AVX2
 // only), so every lane's result is the same double. One thread, time_search, min of 3 to 5
 // interleaved runs: 6D 5k 13.28 -> 12.36 s, 7D 1k 10.44 -> 9.96, 8D 300 10.05 -> 9.75; 4D
-// 100k and 5D 20k within the noise (+0.4%, -1.5%): there the blocks' loads, not their
-// arithmetic, take the time.
+// 100k and 5D 20k within the noise (+0.4%, -1.5%).
 using Quad = double __attribute__((vector_size(4 * sizeof(double))));
 constexpr int kQuads = LeafBlocks::kLanes / 4;
 __attribute__((target("avx2"))) inline Quad load_quad(const double* x) {
@@ -707,8 +714,16 @@ __attribute__((target("avx2"))) inline Quad load_quad(const double* x) {
 }
 __attribute__((target("avx2"))) inline Quad broadcast(double x) { return Quad{x, x, x, x}; }
 
+// The lanes whose distance is not above reach2, as a bit mask.
+__attribute__((target("avx2"))) inline unsigned not_above(const Quad* distance2, double reach2) {
+  unsigned mask = 0;
+  for (int i = 0; i < kQuads; ++i)
+    mask |= static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(reinterpret_cast<__m256d>(distance2[i]), _mm256_set1_pd(reach2), _CMP_NGT_UQ))) << (4 * i);
+  return mask;
+}
+
 template <int D>
-__attribute__((target("avx2"))) void point_distances_avx2(const double* lanes, const double* centre, int d, double* distance2) {
+__attribute__((target("avx2"))) unsigned points_in_reach_avx2(const double* lanes, const double* centre, int d, double reach2) {
   if constexpr (D > 0) d = D;
   constexpr int kLanes = LeafBlocks::kLanes;
   Quad sum[kQuads];
@@ -724,11 +739,11 @@ __attribute__((target("avx2"))) void point_distances_avx2(const double* lanes, c
       sum[i] += delta * delta;
     }
   }
-  std::memcpy(distance2, sum, sizeof sum);
+  return not_above(sum, reach2);
 }
 
 template <int D>
-__attribute__((target("avx2"))) void box_distances_avx2(const double* boxes, const double* centre, int d, double* distance2) {
+__attribute__((target("avx2"))) unsigned boxes_in_reach_avx2(const double* boxes, const double* centre, int d, double reach2) {
   if constexpr (D > 0) d = D;
   constexpr int kLanes = LeafBlocks::kLanes;
   const Quad zero = broadcast(0.0);
@@ -744,18 +759,15 @@ __attribute__((target("avx2"))) void box_distances_avx2(const double* boxes, con
       sum[i] += delta * delta;
     }
   }
-  std::memcpy(distance2, sum, sizeof sum);
+  return not_above(sum, reach2);
 }
 }  // namespace
 #endif
 
 template <int D>
-void SearchKernel<D>::point_distances(const double* lanes, double* distance2) const {
+unsigned SearchKernel<D>::points_in_reach(const double* lanes, double reach2) const {
 #if DRANGE_AVX2_LANES
-  if (avx2_) {
-    point_distances_avx2<D>(lanes, centre_.data(), dim(), distance2);
-    return;
-  }
+  if (avx2_) return points_in_reach_avx2<D>(lanes, centre_.data(), dim(), reach2);
 #endif
   // first_in_ball's arithmetic, lane by lane: the same points pass.
   const int d = dim();
@@ -774,16 +786,13 @@ void SearchKernel<D>::point_distances(const double* lanes, double* distance2) co
       sum[i] += delta * delta;
     }
   }
-  std::memcpy(distance2, sum, sizeof sum);
+  return not_above(sum, reach2);
 }
 
 template <int D>
-void SearchKernel<D>::box_distances(const double* boxes, double* distance2) const {
+unsigned SearchKernel<D>::boxes_in_reach(const double* boxes, double reach2) const {
 #if DRANGE_AVX2_LANES
-  if (avx2_) {
-    box_distances_avx2<D>(boxes, centre_.data(), dim(), distance2);
-    return;
-  }
+  if (avx2_) return boxes_in_reach_avx2<D>(boxes, centre_.data(), dim(), reach2);
 #endif
   // prune's arithmetic, lane by lane: a lower bound of the computed distance of every point
   // in the box (rounding is monotonic).
@@ -804,7 +813,7 @@ void SearchKernel<D>::box_distances(const double* boxes, double* distance2) cons
       sum[i] += delta * delta;
     }
   }
-  std::memcpy(distance2, sum, sizeof sum);
+  return not_above(sum, reach2);
 }
 
 template <int D>
