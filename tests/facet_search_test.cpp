@@ -152,12 +152,12 @@ TEST(FacetSearch, TreeSearchFindsTheScansPointWithSmallAndLargeLeaves) {
   }
 }
 
-// The leaf scan's vector loops (4D and up) at both widths: the same apex for both sides of
+// The leaf scan's vector loops at both widths: the same apex for both sides of
 // every sampled facet, and the same work, point for point (the same doubles in every lane).
 // On a CPU without AVX2 both run the two-double loops, and the test passes trivially.
 TEST(FacetSearch, WideVectorLoopsMatchTheTwoDoubleOnes) {
-  const std::array<std::size_t, 9> sizes = {0, 0, 0, 0, 600, 400, 200, 120, 90};
-  for (int d = 4; d <= 8; ++d) {
+  const std::array<std::size_t, 9> sizes = {0, 0, 3000, 1500, 600, 400, 200, 120, 90};
+  for (int d = 2; d <= 8; ++d) {
     const PointCloud points = drange::generate_points(drange::Distribution::Uniform, sizes[static_cast<std::size_t>(d)], d, 11);
     for (int leaf_size : {drange::engine::search_leaf_size(d), 13, 200}) {
       const SampledFacets sample(points, leaf_size);

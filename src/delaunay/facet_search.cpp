@@ -1,8 +1,8 @@
 // delaunay/facet_search.cpp: the shrinking kd-tree search for the Delaunay point of a facet.
 //
 // One algorithm, SearchKernel<D>, compiled for D = 2..8 (loops of fixed length, no heap
-// indirection in the hot path) and for D = 0 (any d, read at run time). From 4D on it scans a
-// leaf in the blocks of leaf_blocks.hpp.
+// indirection in the hot path) and for D = 0 (any d, read at run time). It scans a leaf in the
+// blocks of leaf_blocks.hpp.
 #include "delaunay/facet_search.hpp"
 
 #include <algorithm>
@@ -71,17 +71,12 @@ class SearchKernel final : public FacetSearch::Kernel {
     return options_.visit_facet_child_first && centroid_[static_cast<std::size_t>(node.split_axis)] > node.split_value;
   }
   void leaf(std::int32_t begin, std::int32_t end) {
-    if (blocks_.enabled()) {
-      if (ball_) {
-        scan_blocks(begin, end);
-        return;
-      }
-      if (candidate_ < 0) {  // no candidate yet: every point of the leaf is in the query box
-        scan_blocks_for_open_side(begin, end);
-        return;
-      }
-    }
-    scan_points(begin, end);
+    if (ball_)
+      scan_blocks(begin, end);
+    else if (candidate_ < 0)  // no candidate yet: every point of the leaf is in the query box
+      scan_blocks_for_open_side(begin, end);
+    else
+      scan_points(begin, end);
   }
 
  private:
@@ -103,58 +98,12 @@ class SearchKernel final : public FacetSearch::Kernel {
       if (x[k] < lower_[static_cast<std::size_t>(k)] || x[k] > upper_[static_cast<std::size_t>(k)]) return false;
     return true;
   }
-  // The first point of [id, end) in the ball, or end: in_query's ball test as a loop of its
-  // own, the same arithmetic in the same order (so the same points pass), with the ball in
-  // locals (test() may change it, so the loop stops at the first point that passes). Points
-  // are contiguous: a leaf's ids are consecutive.
-  std::int32_t first_in_ball(std::int32_t id, std::int32_t end) const {
-    if constexpr (D == 3) id = skip_pairs_outside_ball(id, end);
-    const int d = dim();
-    std::array<double, kMaxRow> centre;
-    for (int k = 0; k < d; ++k) centre[static_cast<std::size_t>(k)] = centre_[static_cast<std::size_t>(k)];
-    const double reach2 = ball_reach2_;
-    for (const double* x = points_.point(id); id < end; ++id, x += d) {
-      double distance2 = 0.0;
-      for (int k = 0; k < d; ++k) {
-        const double delta = x[k] - centre[static_cast<std::size_t>(k)];
-        distance2 += delta * delta;
-      }
-      if (!(distance2 > reach2)) return id;
-    }
-    return end;
-  }
-  // D = 3: the first pair of points (id, id + 1), (id + 2, id + 3), ... of which either is in
-  // the ball, or the last odd point, or end. A pair's 6 coordinates are 3 pairs of doubles: the
-  // two points' squared distances are summed lane by lane, each as first_in_ball sums it (x,
-  // then y, then z: the same points pass), with one branch per pair instead of one per point.
-  // 3D 1M time_search -3%, 200k -1.3% (uniform) to -1.9% (gaussian). Not in 2D, where it was
-  // 5% slower (fewer points scanned per leaf); nor four points per branch in 3D: 10% slower
-  // (a point in the ball is usually met early, and the ball then shrinks).
-  std::int32_t skip_pairs_outside_ball(std::int32_t id, std::int32_t end) const {
-    const Pair reach2 = {ball_reach2_, ball_reach2_};
-    const Pair cxy = {centre_[0], centre_[1]}, czx = {centre_[2], centre_[0]}, cyz = {centre_[1], centre_[2]};
-    for (const double* x = points_.point(id); id + 2 <= end; id += 2, x += 6) {
-      const Pair p = load_pair(x) - cxy, q = load_pair(x + 2) - czx, r = load_pair(x + 4) - cyz;  // (x0, y0), (z0, x1), (y1, z1)
-      const Pair sp = p * p, sq = q * q, sr = r * r;
-      const Pair sum = (__builtin_shufflevector(sp, sq, 0, 3) + __builtin_shufflevector(sp, sr, 1, 2)) +
-                       __builtin_shufflevector(sq, sr, 0, 3);
-      const auto outside = sum > reach2;  // NaN: not outside, as in first_in_ball
-      if (!(outside[0] & outside[1])) return id;
-    }
-    return id;
-  }
-  // The leaf's points one by one: the ball test (first_in_ball), or the box test while there is
-  // no ball.
+  // The leaf's points one by one, by in_query: where there is a candidate but no ball (the
+  // variants without one, or a sphere whose box could not be trusted), and the rest of a leaf
+  // after test() lost the ball.
   void scan_points(std::int32_t begin, std::int32_t end) {
-    for (std::int32_t id = begin; id < end; ++id) {
-      if (ball_) {  // the usual case: skip to the leaf's next point in the ball
-        id = first_in_ball(id, end);
-        if (id == end) return;
-        test(id);
-      } else if (in_query(points_.point(id))) {
-        test(id);
-      }
-    }
+    for (std::int32_t id = begin; id < end; ++id)
+      if (in_query(points_.point(id))) test(id);
   }
   // The leaf's points block by block (LeafBlocks): a block whose box misses the ball is
   // skipped; in the others, the squared distances of all the block's points are computed at
@@ -270,7 +219,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   std::array<double, kMaxRow> row_{};
   SearchCounters* counters_ = nullptr;
   SeedMemory& seeds_;  // SearchOptions::seed_candidate
-  LeafBlocks blocks_;
+  const LeafBlocks& blocks_;  // points_.blocks
 };
 
 template <int D>
@@ -284,7 +233,7 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       box_orient_gamma_(orient_gamma_ + 2.01 * geometry::gamma_bound(geometry::laplace_roundings(points.dim - 1, 1))),
       minors_(points.dim + 1),
       seeds_(seeds),
-      blocks_(points, options.use_kdtree && points.dim >= kMinBlockDimension) {
+      blocks_(points.blocks) {
   if (options.use_kdtree && options.sphere_shell && points.shell.active()) shell_ = &points.shell;
 #if DRANGE_AVX2_LANES
   avx2_ = wide && __builtin_cpu_supports("avx2");
@@ -769,7 +718,7 @@ unsigned SearchKernel<D>::points_in_reach(const double* lanes, double reach2) co
 #if DRANGE_AVX2_LANES
   if (avx2_) return points_in_reach_avx2<D>(lanes, centre_.data(), dim(), reach2);
 #endif
-  // first_in_ball's arithmetic, lane by lane: the same points pass.
+  // in_query's arithmetic, lane by lane: the same points pass.
   const int d = dim();
   constexpr int kLanes = LeafBlocks::kLanes;
   Pair sum[kPairs];
@@ -898,7 +847,7 @@ std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, Se
 
 int search_leaf_size(int dim) {
   // Larger leaves: fewer kd-tree nodes entered (each a box test, often a cache miss) but more
-  // points scanned per leaf (first_in_ball: a tight loop over contiguous coordinates). The
+  // points scanned per leaf (then a tight loop over contiguous coordinates). The
   // search's time on one thread (drange generate uniform N D --seed 1; delaunay --stats
   // --threads 1; best of 2, 2 cores shared, so +-5%) with leaf size 8 -> 16, 32, 64, 128:
   //   2D 1M     0.98 s -> 0.94, 0.89, 0.91, 1.02
@@ -909,7 +858,7 @@ int search_leaf_size(int dim) {
   //   7D 1k        -   ->    -, 24.7, 22.8, 23.2 (one run)
   // Beyond the best size the time is flat up to about twice as large, then grows (the scan
   // dominates).
-  // From 4D on, the leaf scan has since become block by block (LeafBlocks: eight boxes of 8
+  // From 4D on, the leaf scan then became block by block (LeafBlocks: eight boxes of 8
   // points tested at once, then only the blocks that meet the ball), which makes a large leaf
   // cheap to scan, and the measurements moved. On the AMD EPYC machine, 2026-11-25, min of 3
   // (5 where marked) interleaved runs, leaf size 64 -> 128, 256:
@@ -919,8 +868,16 @@ int search_leaf_size(int dim) {
   //   7D 1k    11.146   -> 10.779, 10.547    7D 2k    32.735 -> 31.239, 30.524
   //   8D 300   10.804   -> 10.481, 10.406    (5D 20k at 512: 8.221, against 7.924 at 256)
   // 128 and 256 are within the noise of each other from 5D to 6D; 256 won in 7D and 8D, 128
-  // in 4D. 3D 200k at 128: 1.046 -> 1.064 s (3D has no blocks). 9D and up take the 8D value.
-  constexpr int kByDimension[] = {0, 0, 32, 64, 128, 256, 256, 256, 256};
+  // in 4D. 3D 200k at 128: 1.046 -> 1.064 s (3D had no blocks then).
+  // Since the lane tests give bit masks, the blocks serve 2D and 3D too, and a leaf scan costs
+  // less again (min of 3 interleaved runs, blocks against the earlier point-by-point scan):
+  //   2D 1M     leaf 32, no blocks 0.788 s -> blocks at 32: 0.911, 64: 0.771, 128: 0.811
+  //   3D 200k   leaf 64, no blocks 1.028 s -> blocks at 64: 0.963, 128: 0.933, 256: 0.908 (0.925
+  //             at 128 in that pair); 3D 1M 128 -> 256: 4.693 -> 4.705, grid 60^3 1.134 -> 1.117
+  //   4D 100k   128 -> 256: 3.696 -> 3.578; 4D 30k 0.961 -> 0.940
+  //   5D 20k    256 -> 512: 6.179 -> 6.189; 6D 5k 11.492 -> 11.170 (within the noise: 256 kept)
+  // 9D and up take the 8D value.
+  constexpr int kByDimension[] = {0, 0, 64, 128, 256, 256, 256, 256, 256};
   return dim < static_cast<int>(std::size(kByDimension)) ? kByDimension[dim] : kByDimension[std::size(kByDimension) - 1];
 }
 

@@ -55,7 +55,7 @@ class FacetSearch {
   // Which compilation of the search runs: the one for the points' dimension where there is
   // one (d = 2..8), or the one for any d (the tests compare the two).
   enum class KernelChoice { FixedDimension, AnyDimension };
-  // How wide the vector loops over a leaf's blocks (4D and up) are: Widest takes AVX2 where the
+  // How wide the vector loops over a leaf's blocks are: Widest takes AVX2 where the
   // CPU has it (x86-64), else two doubles (SSE2, NEON); TwoDoubles always the latter. Both
   // give the same doubles (the tests compare them).
   enum class VectorWidth { Widest, TwoDoubles };

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "delaunay/leaf_blocks.hpp"
 #include "delaunay/sphere_shell.hpp"
 #include "spatial/kdtree.hpp"
 #include "util/uninitialized_vector.hpp"
@@ -23,6 +24,7 @@ struct PointStore {
   util::UninitializedVector<std::int64_t> rank;         // lexicographic rank of each id
   util::UninitializedVector<std::int64_t> input_index;  // input index of each id
   spatial::KdTree tree;                    // over the ids
+  LeafBlocks blocks;                       // the leaves' points in blocks, for the search's leaf scan
   // True when the coordinates were scaled below 1 in magnitude (prepare_points.cpp): then every
   // entry of the search's determinants is below 2^6 and no underflow can escape the error bounds
   // of its fast filter. False only for inputs spanning more than 2^1022 in magnitude, which

@@ -209,6 +209,7 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   mark_dyadic(by_rank, store, team);
   store.tree.build_and_reorder(by_rank.data(), store.size, d, leaf_size, team.threads());
   store.coords = std::move(by_rank);  // now in tree order
+  store.blocks = LeafBlocks(store.tree, store.coords.data(), d, team);
   store.shell = fit_sphere_shell(store.coords.data(), store.size, d, store.tree);
   const auto& order = store.tree.order();
   store.rank.resize(kept);
