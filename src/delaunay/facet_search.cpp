@@ -559,13 +559,12 @@ void SearchKernel<D>::scan_blocks(std::int32_t begin, std::int32_t end) {
 
 template <int D>
 void SearchKernel<D>::scan_blocks_for_open_side(std::int32_t begin, std::int32_t end) {
-  constexpr int kLanes = LeafBlocks::kLanes;
   const LeafBlocks::Groups groups = blocks_.groups(points_.tree.leaf_of(begin));
   for (std::int32_t group = groups.first; group < groups.first + groups.count; ++group) {
-    const unsigned blocks = boxes_maybe_open_side(blocks_.boxes(group));
-    for (int slot = 0; slot < kLanes; ++slot) {
+    for (unsigned blocks = boxes_maybe_open_side(blocks_.boxes(group)); blocks != 0; blocks &= blocks - 1) {
+      const int slot = __builtin_ctz(blocks);
       const std::int32_t count = blocks_.count(group, slot);
-      if (count == 0 || !(blocks >> slot & 1)) continue;
+      if (count == 0) break;  // the empty slots come last
       const std::int32_t from = blocks_.begin(group, slot);
       for (unsigned open = maybe_open_side(blocks_.lanes(group, slot), count); open != 0; open &= open - 1) {
         const int j = __builtin_ctz(open);
