@@ -385,8 +385,10 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
   // squares and a sum of positive terms; an underflowing term only makes it smaller), so
   // comparing with reach^2 (1 + 1e-10) never drops a point of the ball. Far below 1 (the
   // points are scaled to magnitudes near 1), reach^2 itself could underflow: no ball then.
-  ball_ = options_.ball_query && reach > 0x1p-400;
+  // Nor when it overflows: the leaf blocks' lanes past a block's points, at infinity, must
+  // stay out of every ball (scan_blocks takes the lanes in reach without their count).
   ball_reach2_ = reach * reach * (1 + 1e-10);
+  ball_ = options_.ball_query && reach > 0x1p-400 && ball_reach2_ < kInfinity;
 }
 
 template <int D>
