@@ -19,13 +19,13 @@ class Team;
 // the build orders a leaf's points (halving its range down to KdTree::kOrderLeafSize: each
 // block is a subtree of that order, near points). A leaf's blocks come in groups of kLanes
 // (a leaf of up to kLanes^2 points has one group), each group with the bounding boxes of its
-// blocks transposed (lower k of its j-th block at k * kLanes + j, then the upper bounds; an
-// empty slot's box is at +infinity), each block with its points' coordinates transposed
-// likewise (+infinity past its points). The leaf scan then tests the ball against a group's
-// boxes together and, in the blocks that meet the ball, the distances of the block's points
-// together: straight-line loops over kLanes doubles (vector instructions) that give bit masks.
-// A copy of the coordinates, O(n d) doubles, built once (prepare_points) and shared by every
-// search thread.
+// blocks transposed (lower k of its j-th block at k * kLanes + j, then the upper bounds; the
+// empty slots, past the leaf's last block in its last group, have their box at +infinity),
+// each block with its points' coordinates transposed likewise (+infinity past its points).
+// The leaf scan then tests the ball against a group's boxes together and, in the blocks that
+// meet the ball, the distances of the block's points together: straight-line loops over kLanes
+// doubles (vector instructions) that give bit masks. A copy of the coordinates, O(n d)
+// doubles, built once (prepare_points) and shared by every search thread.
 //
 // In every dimension since the lane tests give masks (facet_search.cpp, scan_blocks). Before,
 // with a branch per lane, the blocks lost in 2D and 3D (2D 1M points, time_search 0.87 ->
