@@ -11,6 +11,7 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -93,6 +94,63 @@ TEST(SphereShell, OffsetsAndNodeRangesBoundTheExactOffsets) {
         ASSERT_LE(mpq_class(shell.of(static_cast<std::int32_t>(i))[0]), exact[static_cast<std::size_t>(id)]) << "node " << i;
         ASSERT_GE(mpq_class(shell.of(static_cast<std::int32_t>(i))[1]), exact[static_cast<std::size_t>(id)]) << "node " << i;
       }
+  }
+}
+
+TEST(SphereShell, ConesHoldTheirNodesPointsExactly) {
+  // For every node with a cone: each point's exact y = x - g has m . y >= cos_lo |y| and
+  // r_lo <= |y| <= r_hi, and sin_hi^2 >= 1 - cos_lo^2 / |m|^2 (the rim's sine for m as stored).
+  for (int d : {2, 3, 5}) {
+    for (const PointCloud& points : {sphere(2000, d, 13), sphere(2000, d, 14, 2.0, -0.5, 1e-12)}) {
+      const auto store = store_of(points);
+      ASSERT_TRUE(store.shell.active());
+      const drange::engine::SphereShell& shell = store.shell;
+      const auto& nodes = store.tree.nodes();
+      std::size_t leaves = 0, leaf_cones = 0;
+      for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const double* cone = shell.cone_of(static_cast<std::int32_t>(i));
+        const double cos_lo = cone[d], sin_hi = cone[d + 1], r_lo = cone[d + 2], r_hi = cone[d + 3];
+        if (nodes[i].right < 0) ++leaves;
+        if (!(cos_lo > 0.0)) continue;
+        if (nodes[i].right < 0) ++leaf_cones;
+        mpq_class m2 = 0;
+        for (int k = 0; k < d; ++k) m2 += mpq_class(cone[k]) * mpq_class(cone[k]);
+        ASSERT_LT(abs(m2 - 1), mpq_class(1e-12)) << "node " << i;
+        ASSERT_GE(mpq_class(sin_hi) * mpq_class(sin_hi), 1 - mpq_class(cos_lo) * mpq_class(cos_lo) / m2) << "node " << i;
+        for (std::int32_t id = nodes[i].begin; id < nodes[i].end; ++id) {
+          mpq_class dot = 0, y2 = 0;
+          for (int k = 0; k < d; ++k) {
+            const mpq_class y = mpq_class(store.point(id)[k]) - mpq_class(shell.centre[static_cast<std::size_t>(k)]);
+            dot += mpq_class(cone[k]) * y;
+            y2 += y * y;
+          }
+          ASSERT_GE(dot, 0) << "node " << i << " id " << id;
+          ASSERT_GE(dot * dot, mpq_class(cos_lo) * mpq_class(cos_lo) * y2) << "node " << i << " id " << id;
+          ASSERT_LE(mpq_class(r_lo) * mpq_class(r_lo), y2) << "node " << i << " id " << id;
+          ASSERT_GE(mpq_class(r_hi) * mpq_class(r_hi), y2) << "node " << i << " id " << id;
+        }
+      }
+      if (d <= 3) EXPECT_EQ(leaf_cones, leaves) << "d=" << d << ": a leaf holds a small cap of the sphere";
+    }
+  }
+}
+
+TEST(SphereShell, LeavesListTheirPointsByOffset) {
+  for (int d : {2, 3, 4}) {
+    const auto store = store_of(sphere(3000, d, 15, 1.0, 0.0, 1e-10));
+    const drange::engine::SphereShell& shell = store.shell;
+    ASSERT_TRUE(shell.active());
+    for (const auto& node : store.tree.nodes()) {
+      if (node.right >= 0) continue;
+      std::vector<std::int32_t> ids(shell.leaf_ids.begin() + node.begin, shell.leaf_ids.begin() + node.end);
+      for (std::int32_t i = node.begin; i < node.end; ++i) {
+        const auto at = static_cast<std::size_t>(i);
+        EXPECT_EQ(shell.leaf_offsets[at], shell.offset[static_cast<std::size_t>(shell.leaf_ids[at])]);
+        if (i > node.begin) EXPECT_LE(shell.leaf_offsets[at - 1], shell.leaf_offsets[at]);
+      }
+      std::sort(ids.begin(), ids.end());
+      for (std::size_t j = 0; j < ids.size(); ++j) ASSERT_EQ(ids[j], node.begin + static_cast<std::int32_t>(j));
+    }
   }
 }
 
@@ -199,11 +257,15 @@ TEST(SphereShell, SameValidTriangulationWithAndWithoutIt) {
 
 TEST(SphereShell, CutsTheWorkOnSpheres) {
   // Counters, not times: without the shell every search scans nearly every point, and GMP
-  // decides most points near the candidate's sphere.
+  // decides most points near the candidate's sphere. With it, the leaves' offset order and the
+  // nodes' cones leave few points and nodes: on these inputs, 36.6 points tested and 16.9
+  // nodes entered per triangle against 4 021 and 272 (before the cones and the offset order:
+  // 388 and 48.5), and in 3D 202 points per tetrahedron against 1 974 (then 504).
   for (int d : {2, 3}) {
     const PointCloud points = sphere(d == 2 ? 8000 : 2000, d, 31);
     const drange::Statistics with = triangulate(points, "full").stats, without = triangulate(points, "no-shell").stats;
-    EXPECT_LT(with.points_tested * 3, without.points_tested) << "d=" << d;
+    EXPECT_LT(with.points_tested * (d == 2 ? 50 : 5), without.points_tested) << "d=" << d;
+    if (d == 2) EXPECT_LT(with.search_calls * 8, without.search_calls);
     EXPECT_LT(with.exact_fallbacks * 100, without.exact_fallbacks) << "d=" << d;
   }
 }

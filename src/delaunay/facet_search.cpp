@@ -71,7 +71,9 @@ class SearchKernel final : public FacetSearch::Kernel {
     return options_.visit_facet_child_first && centroid_[static_cast<std::size_t>(node.split_axis)] > node.split_value;
   }
   void leaf(std::int32_t begin, std::int32_t end) {
-    if (ball_)
+    if (shell_form_)
+      scan_shell_leaf(begin, end);
+    else if (ball_)
       scan_blocks(begin, end);
     else if (candidate_ < 0)  // no candidate yet: every point of the leaf is in the query box
       scan_blocks_for_open_side(begin, end);
@@ -146,6 +148,18 @@ class SearchKernel final : public FacetSearch::Kernel {
   void set_shell_form();
   int shell_sign(std::int32_t id) const;
   bool shell_prunes(std::int32_t node) const;
+  // A lower bound of the form's linear part, B . y + K, over the node's points: the larger of
+  // its bounds over the node's box and over its cone (SphereShell::cone); -infinity if none.
+  double shell_linear_low(std::int32_t node) const;
+  // A leaf's points by offset (SphereShell::leaf_ids), from the end whose offsets make the
+  // form smallest, up to the first point whose offset alone proves the form positive: the
+  // points beyond it are outside the candidate's sphere too. On a sphere most points' offsets
+  // do, and the few left are those within rounding of the candidate's sphere.
+  void scan_shell_leaf(std::int32_t begin, std::int32_t end);
+  // Whether the node's cone proves all its points on the closed side of the facet, where its
+  // box does not (box_abs: prune's absolute tree over the box). On a sphere the facet's
+  // hyperplane cuts it near the facet only, but the boxes of the points near it reach across.
+  bool cone_on_closed_side(std::int32_t node, double box_abs) const;
   // The sign of sigma O over the computed value, when certified with the bound factor `gamma`
   // or proved exact; else 0.
   int orientation_sign(double value, double abs_tree, double gamma) const;
@@ -212,8 +226,9 @@ class SearchKernel final : public FacetSearch::Kernel {
   std::array<double, kMaxRow> shell_b_{};
   double shell_lift_ = 0.0, shell_constant_ = 0.0;
   double shell_eta_term_ = 0.0;  // |lift| times the error bound of the points' offsets, with margin
-  // Error bound factors of shell_sign and shell_prunes (see there).
-  double shell_point_gamma_ = 0.0, shell_node_gamma_ = 0.0;
+  double shell_b_norm_ = 0.0;    // an upper bound of |b|
+  // Error bound factors of shell_sign, shell_prunes and shell_linear_low (see there).
+  double shell_point_gamma_ = 0.0, shell_node_gamma_ = 0.0, shell_cone_gamma_ = 0.0, shell_sum_gamma_ = 0.0;
 
   // Per point (scratch).
   std::array<double, kMaxRow> row_{};
@@ -242,6 +257,8 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
 #endif
   shell_point_gamma_ = geometry::gamma_bound(d_ + 7);
   shell_node_gamma_ = geometry::gamma_bound(d_ + 8);
+  shell_cone_gamma_ = geometry::gamma_bound(8 * d_ + 40);
+  shell_sum_gamma_ = geometry::gamma_bound(6);
   if (points_.dyadic) {
     for (int units = 0; units <= d_ + 2; ++units)
       exact_limits_[static_cast<std::size_t>(units)] = geometry::power_of_two_limit(52 + points_.unit_exponent * units);
@@ -402,6 +419,9 @@ void SearchKernel<D>::set_shell_form() {
   shell_lift_ *= sigma_;
   shell_constant_ *= sigma_;
   shell_eta_term_ = 1.01 * std::fabs(shell_lift_) * shell_->eta;
+  double b2 = 0.0;
+  for (int k = 0; k < d; ++k) b2 += shell_b_[static_cast<std::size_t>(k)] * shell_b_[static_cast<std::size_t>(k)];
+  shell_b_norm_ = std::sqrt(b2) * (1 + geometry::gamma_bound(d + 2));
 }
 
 template <int D>
@@ -433,19 +453,15 @@ int SearchKernel<D>::shell_sign(std::int32_t id) const {
 }
 
 template <int D>
-bool SearchKernel<D>::shell_prunes(std::int32_t node) const {
-  // Every point x of the node has sigma I(p, x) > 0 (it is outside the candidate's sphere, so
-  // it cannot win, now or later) when a lower bound of it over the node is positive. With the
-  // exact form sigma I = B . y + W S_x + K (shell_sign), y in the node's box less g and S_x in
-  // the node's range (sphere_shell.cpp: bounds of the exact offsets), sigma I is at least the
-  // sum of each term's minimum. That sum is evaluated in floating point: within
+double SearchKernel<D>::shell_linear_low(std::int32_t node) const {
+  // With the exact coefficients, sigma I = B . y + W S_x + K (shell_sign), y = x - g.
+  // The box: each term's minimum over the node's box, summed in floating point: within
   // gamma(d + 3) a of its exact value on the truncated coefficients, and within 2.01 u a of
   // the exact coefficients' (a: its absolute tree), which shell_node_gamma_ covers.
   const int d = dim();
   const double* lo = points_.tree.template lower<D>(node);
   const double* hi = points_.tree.template upper<D>(node);
   const double* g = shell_->centre.data();
-  const double* range = shell_->of(node);
   double low = shell_constant_, a = std::fabs(shell_constant_);
   for (int k = 0; k < d; ++k) {
     const double b = shell_b_[static_cast<std::size_t>(k)];
@@ -453,10 +469,81 @@ bool SearchKernel<D>::shell_prunes(std::int32_t node) const {
     low += std::min(b * ylo, b * yhi);
     a += std::fabs(b) * std::max(std::fabs(ylo), std::fabs(yhi));
   }
-  low += std::min(shell_lift_ * range[0], shell_lift_ * range[1]);
-  a += std::fabs(shell_lift_) * std::max(std::fabs(range[0]), std::fabs(range[1]));
-  if (!(a < geometry::kFilterOverflow)) return false;  // also NaN
-  return low > shell_node_gamma_ * a + 0x1p-1000;
+  if (!(a < geometry::kFilterOverflow)) return -kInfinity;  // also NaN
+  double best = low - shell_node_gamma_ * a - 0x1p-1000;
+  // The cone: y = r e with r_lo <= r <= r_hi and e a unit vector with m . e >= cos_lo. b . e is
+  // convex along the cone's axis, least (-|b|) at e = -b / |b|; when that lies outside the cone,
+  // the least is on its rim, at beta cos_lo - |b - beta m| sin, beta = b . m. With sin_hi for
+  // sin the value is lower still. Each quantity is within (2 d + 8) u |b| of its exact value,
+  // m's length and b's truncation add 2 (d + 3) u |b|, r and the sum 2 u: shell_cone_gamma_
+  // covers them over cone_a. The case split has a margin far above beta's rounding error.
+  const double* cone = shell_->cone_of(node);
+  const double cos_lo = cone[d];
+  if (cos_lo > 0.0) {
+    double beta = 0.0;
+    for (int k = 0; k < d; ++k) beta += shell_b_[static_cast<std::size_t>(k)] * cone[k];
+    double perp2 = 0.0;
+    for (int k = 0; k < d; ++k) {
+      const double t = shell_b_[static_cast<std::size_t>(k)] - beta * cone[k];
+      perp2 += t * t;
+    }
+    const double least = -beta < (cos_lo - 1e-6) * shell_b_norm_ ? beta * cos_lo - std::sqrt(perp2) * cone[d + 1] : -shell_b_norm_;
+    const double linear = least < 0.0 ? least * cone[d + 3] : least * cone[d + 2];
+    const double cone_a = std::fabs(shell_constant_) + shell_b_norm_ * cone[d + 3];
+    if (cone_a < geometry::kFilterOverflow)
+      best = std::max(best, (shell_constant_ + linear) - shell_cone_gamma_ * cone_a - 0x1p-1000);
+  }
+  return best;
+}
+
+template <int D>
+bool SearchKernel<D>::shell_prunes(std::int32_t node) const {
+  // Every point x of the node has sigma I(p, x) > 0 (it is outside the candidate's sphere, so
+  // it cannot win, now or later) when a lower bound of it over the node is positive: the linear
+  // part's (shell_linear_low) plus the least W S_x over the node's range of exact offsets
+  // (sphere_shell.cpp). W's truncation (2 u), the product and the sum round by 4 u of the
+  // absolute tree: shell_sum_gamma_.
+  const double linear = shell_linear_low(node);
+  const double* range = shell_->of(node);
+  const double low = linear + std::min(shell_lift_ * range[0], shell_lift_ * range[1]);
+  const double a = std::fabs(linear) + std::fabs(shell_lift_) * std::max(std::fabs(range[0]), std::fabs(range[1]));
+  return low > shell_sum_gamma_ * a + 0x1p-1000;  // false on -infinity and NaN
+}
+
+template <int D>
+void SearchKernel<D>::scan_shell_leaf(std::int32_t begin, std::int32_t end) {
+  // For W > 0 the points go by increasing offset s: sigma I(p, x) >= linear + W S_x, and once
+  // that is certified positive at s, it is at every later point, whose exact offset is no
+  // smaller than s - u |s| - eta. For W < 0, by decreasing offset. The bound: shell_prunes'
+  // roundings, the offset's error u |s| (shell_sum_gamma_ has room) and eta (shell_eta_term_).
+  // A new candidate changes the form (and perhaps W's sign); the points already considered
+  // lie outside its sphere too, or on the closed side, so the scan goes on from the ends.
+  const std::int32_t node = points_.tree.leaf_of(begin);
+  const std::int32_t* ids = shell_->leaf_ids.data();
+  const double* offsets = shell_->leaf_offsets.data();
+  std::int32_t first = begin, last = end;  // the points not yet considered, by position
+  std::int32_t form_of = -1;
+  double linear = 0.0;
+  while (first < last) {
+    if (!shell_form_) {  // the candidate's form could not be computed: the rest one by one
+      for (std::int32_t i = first; i < last; ++i) consider(ids[i]);
+      return;
+    }
+    if (form_of != candidate_) {
+      linear = shell_linear_low(node);
+      form_of = candidate_;
+    }
+    const double w = shell_lift_;
+    const std::int32_t i = w < 0.0 ? last - 1 : first;
+    if (w != 0.0) {
+      const double ws = w * offsets[i];
+      const double bound = shell_sum_gamma_ * (std::fabs(linear) + std::fabs(ws)) + shell_eta_term_ + 0x1p-1000;
+      if (linear + ws > bound) return;  // false on -infinity and NaN
+    }
+    if (w < 0.0) --last;
+    else ++first;
+    consider(ids[i]);
+  }
 }
 
 template <int D>
@@ -812,7 +899,41 @@ bool SearchKernel<D>::prune(std::int32_t node) const {
     m += a * (a >= 0 ? dhi : dlo);
     m_abs += a_abs_[static_cast<std::size_t>(k)] * std::max(std::fabs(dlo), std::fabs(dhi));
   }
-  return orientation_sign(m, m_abs, box_orient_gamma_) < 0;
+  if (orientation_sign(m, m_abs, box_orient_gamma_) < 0) return true;
+  return shell_ != nullptr && cone_on_closed_side(node, m_abs);
+}
+
+template <int D>
+bool SearchKernel<D>::cone_on_closed_side(std::int32_t node, double box_abs) const {
+  // sigma O(x) = a . (x - f0) = a . y + a . (g - f0) with y = x - g = r e in the node's cone
+  // (shell_linear_low): a . e is at most |a|, or beta cos_lo + |a - beta m| sin_hi when a / |a|
+  // lies outside the cone (beta = a . m). The rounding here is within shell_cone_gamma_ of
+  // the absolute tree; the exact minors differ from a by at most prune's coefficient error,
+  // which box_orient_gamma_ times the box's absolute tree covers (the box holds the points).
+  const int d = dim();
+  const double* cone = shell_->cone_of(node);
+  const double cos_lo = cone[d];
+  if (!(cos_lo > 0.0) || !facet_clean_) return false;
+  const double* g = shell_->centre.data();
+  double beta = 0.0, norm2 = 0.0, offset = 0.0, offset_abs = 0.0;
+  for (int k = 0; k < d; ++k) {
+    const double a = a_[static_cast<std::size_t>(k)];
+    const double t = g[k] - f0_[k];
+    beta += a * cone[k];
+    norm2 += a * a;
+    offset += a * t;
+    offset_abs += std::fabs(a) * std::fabs(t);
+  }
+  double perp2 = 0.0;
+  for (int k = 0; k < d; ++k) {
+    const double t = a_[static_cast<std::size_t>(k)] - beta * cone[k];
+    perp2 += t * t;
+  }
+  const double norm = std::sqrt(norm2) * (1 + geometry::gamma_bound(d + 2));
+  const double most = beta < (cos_lo - 1e-6) * norm ? beta * cos_lo + std::sqrt(perp2) * cone[d + 1] : norm;
+  const double value = offset + (most > 0.0 ? most * cone[d + 3] : most * cone[d + 2]);
+  const double bound = shell_cone_gamma_ * (offset_abs + norm * cone[d + 3]) + box_orient_gamma_ * box_abs + 0x1p-1000;
+  return value < -bound;  // false on NaN
 }
 
 template <int D>

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include "geometry/error_bound.hpp"
 #include "spatial/kdtree.hpp"
@@ -154,6 +155,87 @@ double sphere_offset(const double* x, const double* g, int dim, double rho, doub
 
 double offset_error(int dim) { return 4.0 * (3 * dim * (dim + 4) + 3) * geometry::kUnitRoundoff * geometry::kUnitRoundoff; }
 
+// The nodes' cones (SphereShell::cone). Each point's direction e = fl(y / |y|) is within
+// (d + 4) u of the exact one per unit of length and m . e rounds by d u more, so cos_lo, the
+// least computed m . e less (4 d + 16) u, bounds the exact directions; the axis m is within
+// (d + 2) u of unit length, which the (4 d + 16) u added under sin_hi's root covers. |y|
+// rounds by (d + 2) u: r_lo and r_hi take (d + 4) u off and on.
+void fit_cones(const double* coords, int dim, const std::vector<spatial::KdTree::Node>& nodes, const std::vector<double>& g,
+               SphereShell& shell) {
+  const auto d = static_cast<std::size_t>(dim);
+  const std::size_t n = shell.offset.size(), stride = d + 4;
+  const double u = geometry::kUnitRoundoff;
+  std::vector<double> unit(n * d), radius(n);
+  for (std::size_t id = 0; id < n; ++id) {
+    double r2 = 0.0;
+    for (std::size_t k = 0; k < d; ++k) {
+      const double y = coords[id * d + k] - g[k];
+      unit[id * d + k] = y;
+      r2 += y * y;
+    }
+    radius[id] = std::sqrt(r2);
+    for (std::size_t k = 0; k < d; ++k) unit[id * d + k] = radius[id] > 0.0 ? unit[id * d + k] / radius[id] : 0.0;
+  }
+  // The axes: each node's sum of its points' directions (children before parents: preorder
+  // backwards), normalised.
+  std::vector<double> sum(nodes.size() * d, 0.0);
+  shell.cone.assign(nodes.size() * stride, 0.0);
+  for (std::size_t i = nodes.size(); i-- > 0;) {
+    const spatial::KdTree::Node& node = nodes[i];
+    double* s = &sum[i * d];
+    double* cone = &shell.cone[i * stride];
+    double r_lo = std::numeric_limits<double>::infinity(), r_hi = 0.0;
+    if (node.right < 0) {
+      for (auto id = static_cast<std::size_t>(node.begin); id < static_cast<std::size_t>(node.end); ++id) {
+        for (std::size_t k = 0; k < d; ++k) s[k] += unit[id * d + k];
+        r_lo = std::min(r_lo, radius[id]);
+        r_hi = std::max(r_hi, radius[id]);
+      }
+    } else {
+      const std::size_t left = i + 1, right = static_cast<std::size_t>(node.right);
+      for (std::size_t k = 0; k < d; ++k) s[k] = sum[left * d + k] + sum[right * d + k];
+      r_lo = std::min(shell.cone[left * stride + d + 2], shell.cone[right * stride + d + 2]);
+      r_hi = std::max(shell.cone[left * stride + d + 3], shell.cone[right * stride + d + 3]);
+    }
+    cone[d + 2] = r_lo * (1 - (dim + 4) * u);
+    cone[d + 3] = r_hi * (1 + (dim + 4) * u);
+    double norm2 = 0.0;
+    for (std::size_t k = 0; k < d; ++k) norm2 += s[k] * s[k];
+    const double norm = std::sqrt(norm2);
+    double cos_lo = -2.0;
+    if (norm > 0.0 && r_lo > 0.0) {
+      for (std::size_t k = 0; k < d; ++k) cone[k] = s[k] / norm;
+      cos_lo = 1.0;
+      for (auto id = static_cast<std::size_t>(node.begin); id < static_cast<std::size_t>(node.end); ++id) {
+        double dot = 0.0;
+        for (std::size_t k = 0; k < d; ++k) dot += cone[k] * unit[id * d + k];
+        cos_lo = std::min(cos_lo, dot);
+      }
+      cos_lo -= (4 * dim + 16) * u;
+      if (!(cos_lo > 0.0)) cos_lo = -2.0;  // wider than a half-space: the box does as well
+    }
+    cone[d] = cos_lo;
+    cone[d + 1] = cos_lo > 0.0 ? std::sqrt(1.0 - cos_lo * cos_lo + (4 * dim + 16) * u) * (1 + 4 * u) : 1.0;
+  }
+}
+
+// SphereShell::leaf_ids and leaf_offsets.
+void sort_leaves(const std::vector<spatial::KdTree::Node>& nodes, SphereShell& shell) {
+  shell.leaf_ids.resize(shell.offset.size());
+  shell.leaf_offsets.resize(shell.offset.size());
+  for (const spatial::KdTree::Node& node : nodes) {
+    if (node.right >= 0) continue;
+    const auto first = shell.leaf_ids.begin() + node.begin, last = shell.leaf_ids.begin() + node.end;
+    std::iota(first, last, node.begin);
+    std::sort(first, last, [&](std::int32_t a, std::int32_t b) {
+      const double sa = shell.offset[static_cast<std::size_t>(a)], sb = shell.offset[static_cast<std::size_t>(b)];
+      return sa < sb || (sa == sb && a < b);
+    });
+    for (std::int32_t i = node.begin; i < node.end; ++i)
+      shell.leaf_offsets[static_cast<std::size_t>(i)] = shell.offset[static_cast<std::size_t>(shell.leaf_ids[static_cast<std::size_t>(i)])];
+  }
+}
+
 }  // namespace
 
 SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree) {
@@ -206,6 +288,8 @@ SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, cons
     shell.range[2 * i] = lo;
     shell.range[2 * i + 1] = hi;
   }
+  fit_cones(coords, dim, nodes, sphere.centre, shell);
+  sort_leaves(nodes, shell);
   shell.centre = std::move(sphere.centre);
   return shell;
 }

@@ -41,9 +41,22 @@ struct SphereShell {
   std::vector<double> offset;
   double eta = 0.0;
   std::vector<double> range;  // per kd-tree node: bounds of the exact |x - g|^2 - rho over its points
+  // Per kd-tree node, a cone from g that holds its points, stride dim + 4: a unit axis m, then
+  // cos_lo (every point's exact direction y / |y|, y = x - g, has m . y >= cos_lo |y|), sin_hi
+  // (at least sqrt(1 - cos_lo^2), with a margin for m's rounding), and r_lo <= |y| <= r_hi.
+  // cos_lo is -2 where no such cone is narrower than a half-space (or a point is at g). On a
+  // sphere the node's points lie on an arc or a cap, which its box bounds loosely: the cone
+  // bounds the form's linear term over them tightly (facet_search.cpp, shell_cone_low).
+  std::vector<double> cone;
+  // Per kd-tree leaf [begin, end): its point ids by increasing offset (leaf_ids[begin..end)),
+  // and those offsets: the leaf scan tests only the points whose offset can still beat the
+  // candidate (facet_search.cpp, scan_shell_leaf).
+  std::vector<std::int32_t> leaf_ids;
+  std::vector<double> leaf_offsets;
 
   bool active() const { return !centre.empty(); }
   const double* of(std::int32_t node) const { return &range[2 * static_cast<std::size_t>(node)]; }
+  const double* cone_of(std::int32_t node) const { return &cone[static_cast<std::size_t>(node) * (centre.size() + 4)]; }
 };
 
 // The shell of `n` points of dimension `dim` (row-major, in the tree's order: node ranges are
