@@ -97,8 +97,8 @@ TEST(SphereShell, OffsetsAndNodeRangesBoundTheExactOffsets) {
   }
 }
 
-TEST(SphereShell, ConesHoldTheirNodesPointsExactly) {
-  // For every node with a cone: each point's exact y = x - g has m . y >= cos_lo |y| and
+TEST(SphereShell, ConesHoldTheirPointsExactly) {
+  // For every node and block with a cone: each point's exact y = x - g has m . y >= cos_lo |y| and
   // r_lo <= |y| <= r_hi, and sin_hi^2 >= 1 - cos_lo^2 / |m|^2 (the rim's sine for m as stored).
   for (int d : {2, 3, 5}) {
     for (const PointCloud& points : {sphere(2000, d, 13), sphere(2000, d, 14, 2.0, -0.5, 1e-12)}) {
@@ -106,50 +106,77 @@ TEST(SphereShell, ConesHoldTheirNodesPointsExactly) {
       ASSERT_TRUE(store.shell.active());
       const drange::engine::SphereShell& shell = store.shell;
       const auto& nodes = store.tree.nodes();
-      std::size_t leaves = 0, leaf_cones = 0;
-      for (std::size_t i = 0; i < nodes.size(); ++i) {
-        const double* cone = shell.cone_of(static_cast<std::int32_t>(i));
+      // Whether the cone holds the points [begin, end) (true for a cone too wide to be used).
+      const auto holds = [&](const double* cone, std::int32_t begin, std::int32_t end) {
         const double cos_lo = cone[d], sin_hi = cone[d + 1], r_lo = cone[d + 2], r_hi = cone[d + 3];
-        if (nodes[i].right < 0) ++leaves;
-        if (!(cos_lo > 0.0)) continue;
-        if (nodes[i].right < 0) ++leaf_cones;
+        if (!(cos_lo > 0.0)) return true;
         mpq_class m2 = 0;
         for (int k = 0; k < d; ++k) m2 += mpq_class(cone[k]) * mpq_class(cone[k]);
-        ASSERT_LT(abs(m2 - 1), mpq_class(1e-12)) << "node " << i;
-        ASSERT_GE(mpq_class(sin_hi) * mpq_class(sin_hi), 1 - mpq_class(cos_lo) * mpq_class(cos_lo) / m2) << "node " << i;
-        for (std::int32_t id = nodes[i].begin; id < nodes[i].end; ++id) {
+        EXPECT_LT(abs(m2 - 1), mpq_class(1e-12));
+        EXPECT_GE(mpq_class(sin_hi) * mpq_class(sin_hi), 1 - mpq_class(cos_lo) * mpq_class(cos_lo) / m2);
+        for (std::int32_t id = begin; id < end; ++id) {
           mpq_class dot = 0, y2 = 0;
           for (int k = 0; k < d; ++k) {
             const mpq_class y = mpq_class(store.point(id)[k]) - mpq_class(shell.centre[static_cast<std::size_t>(k)]);
             dot += mpq_class(cone[k]) * y;
             y2 += y * y;
           }
-          ASSERT_GE(dot, 0) << "node " << i << " id " << id;
-          ASSERT_GE(dot * dot, mpq_class(cos_lo) * mpq_class(cos_lo) * y2) << "node " << i << " id " << id;
-          ASSERT_LE(mpq_class(r_lo) * mpq_class(r_lo), y2) << "node " << i << " id " << id;
-          ASSERT_GE(mpq_class(r_hi) * mpq_class(r_hi), y2) << "node " << i << " id " << id;
+          if (dot < 0 || dot * dot < mpq_class(cos_lo) * mpq_class(cos_lo) * y2 || mpq_class(r_lo) * mpq_class(r_lo) > y2 ||
+              mpq_class(r_hi) * mpq_class(r_hi) < y2) {
+            ADD_FAILURE() << "d=" << d << ": point " << id << " is outside its cone";
+            return false;
+          }
         }
+        return !::testing::Test::HasFailure();
+      };
+      std::size_t leaves = 0, leaf_cones = 0;
+      for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const double* cone = shell.cone_of(static_cast<std::int32_t>(i));
+        const double cos_lo = cone[d];
+        if (nodes[i].right < 0) ++leaves;
+        if (!(cos_lo > 0.0)) continue;
+        if (nodes[i].right < 0) ++leaf_cones;
+        ASSERT_TRUE(holds(cone, nodes[i].begin, nodes[i].end)) << "node " << i;
       }
       if (d <= 3) EXPECT_EQ(leaf_cones, leaves) << "d=" << d << ": a leaf holds a small cap of the sphere";
+      std::size_t block_cones = 0;
+      for (std::size_t b = 0; b + 1 < shell.block_start.size(); ++b) {
+        const double* cone = shell.block_cone_of(static_cast<std::int32_t>(b));
+        if (!holds(cone, shell.block_start[b], shell.block_start[b + 1])) return;
+        block_cones += cone[d] > 0.0;
+      }
+      EXPECT_EQ(block_cones, shell.block_start.size() - 1) << "d=" << d << ": a block holds a few near points";
     }
   }
 }
 
-TEST(SphereShell, LeavesListTheirPointsByOffset) {
+TEST(SphereShell, BlocksCutTheLeavesAndListTheirPointsByOffset) {
   for (int d : {2, 3, 4}) {
     const auto store = store_of(sphere(3000, d, 15, 1.0, 0.0, 1e-10));
     const drange::engine::SphereShell& shell = store.shell;
     ASSERT_TRUE(shell.active());
-    for (const auto& node : store.tree.nodes()) {
-      if (node.right >= 0) continue;
-      std::vector<std::int32_t> ids(shell.leaf_ids.begin() + node.begin, shell.leaf_ids.begin() + node.end);
-      for (std::int32_t i = node.begin; i < node.end; ++i) {
-        const auto at = static_cast<std::size_t>(i);
-        EXPECT_EQ(shell.leaf_offsets[at], shell.offset[static_cast<std::size_t>(shell.leaf_ids[at])]);
-        if (i > node.begin) EXPECT_LE(shell.leaf_offsets[at - 1], shell.leaf_offsets[at]);
+    const auto& nodes = store.tree.nodes();
+    ASSERT_EQ(shell.block_start.back(), store.size);
+    for (std::size_t leaf = 0; leaf < nodes.size(); ++leaf) {
+      if (nodes[leaf].right >= 0) continue;
+      // The leaf's blocks: consecutive, of 1 to 8 points (the whole leaf in 2D), from its first
+      // point to its last.
+      auto block = static_cast<std::size_t>(shell.first_block[leaf]);
+      ASSERT_EQ(shell.block_start[block], nodes[leaf].begin);
+      for (; shell.block_start[block] < nodes[leaf].end; ++block) {
+        const std::int32_t begin = shell.block_start[block], end = shell.block_start[block + 1];
+        ASSERT_GE(end - begin, 1);
+        if (d > 2) ASSERT_LE(end - begin, 8);
+        std::vector<std::int32_t> ids(shell.block_ids.begin() + begin, shell.block_ids.begin() + end);
+        for (std::int32_t i = begin; i < end; ++i) {
+          const auto at = static_cast<std::size_t>(i);
+          EXPECT_EQ(shell.block_offsets[at], shell.offset[static_cast<std::size_t>(shell.block_ids[at])]);
+          if (i > begin) EXPECT_LE(shell.block_offsets[at - 1], shell.block_offsets[at]);
+        }
+        std::sort(ids.begin(), ids.end());
+        for (std::size_t j = 0; j < ids.size(); ++j) ASSERT_EQ(ids[j], begin + static_cast<std::int32_t>(j));
       }
-      std::sort(ids.begin(), ids.end());
-      for (std::size_t j = 0; j < ids.size(); ++j) ASSERT_EQ(ids[j], node.begin + static_cast<std::int32_t>(j));
+      ASSERT_EQ(shell.block_start[block], nodes[leaf].end);
     }
   }
 }

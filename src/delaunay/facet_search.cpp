@@ -151,10 +151,13 @@ class SearchKernel final : public FacetSearch::Kernel {
   // A lower bound of the form's linear part, B . y + K, over the node's points: the larger of
   // its bounds over the node's box and over its cone (SphereShell::cone); -infinity if none.
   double shell_linear_low(std::int32_t node) const;
-  // A leaf's points by offset (SphereShell::leaf_ids), from the end whose offsets make the
-  // form smallest, up to the first point whose offset alone proves the form positive: the
-  // points beyond it are outside the candidate's sphere too. On a sphere most points' offsets
-  // do, and the few left are those within rounding of the candidate's sphere.
+  // The same over a cone (SphereShell::cone); -infinity if the cone is too wide.
+  double cone_linear_low(const double* cone) const;
+  // A leaf's points block by block (SphereShell::block_ids), each block's by offset from the
+  // end whose offsets make the form smallest, up to the first point whose offset alone proves
+  // the form positive over the block's cone: the points beyond it are outside the candidate's
+  // sphere too. On a sphere most points' offsets do, and the few left are those within
+  // rounding of the candidate's sphere.
   void scan_shell_leaf(std::int32_t begin, std::int32_t end);
   // Whether the node's cone proves all its points on the closed side of the facet, where its
   // box does not (box_abs: prune's absolute tree over the box). On a sphere the facet's
@@ -471,29 +474,32 @@ double SearchKernel<D>::shell_linear_low(std::int32_t node) const {
   }
   if (!(a < geometry::kFilterOverflow)) return -kInfinity;  // also NaN
   double best = low - shell_node_gamma_ * a - 0x1p-1000;
-  // The cone: y = r e with r_lo <= r <= r_hi and e a unit vector with m . e >= cos_lo. b . e is
-  // convex along the cone's axis, least (-|b|) at e = -b / |b|; when that lies outside the cone,
-  // the least is on its rim, at beta cos_lo - |b - beta m| sin, beta = b . m. With sin_hi for
-  // sin the value is lower still. Each quantity is within (2 d + 8) u |b| of its exact value,
-  // m's length and b's truncation add 2 (d + 3) u |b|, r and the sum 2 u: shell_cone_gamma_
+  return std::max(best, cone_linear_low(shell_->cone_of(node)));
+}
+
+template <int D>
+double SearchKernel<D>::cone_linear_low(const double* cone) const {
+  // y = r e with r_lo <= r <= r_hi and e a unit vector with m . e >= cos_lo. b . e is convex
+  // along the cone's axis, least (-|b|) at e = -b / |b|; when that lies outside the cone, the
+  // least is on its rim, at beta cos_lo - |b - beta m| sin, beta = b . m. With sin_hi for sin
+  // the value is lower still. Each quantity is within (2 d + 8) u |b| of its exact value, m's
+  // length and b's truncation add 2 (d + 3) u |b|, r and the sum 2 u: shell_cone_gamma_
   // covers them over cone_a. The case split has a margin far above beta's rounding error.
-  const double* cone = shell_->cone_of(node);
+  const int d = dim();
   const double cos_lo = cone[d];
-  if (cos_lo > 0.0) {
-    double beta = 0.0;
-    for (int k = 0; k < d; ++k) beta += shell_b_[static_cast<std::size_t>(k)] * cone[k];
-    double perp2 = 0.0;
-    for (int k = 0; k < d; ++k) {
-      const double t = shell_b_[static_cast<std::size_t>(k)] - beta * cone[k];
-      perp2 += t * t;
-    }
-    const double least = -beta < (cos_lo - 1e-6) * shell_b_norm_ ? beta * cos_lo - std::sqrt(perp2) * cone[d + 1] : -shell_b_norm_;
-    const double linear = least < 0.0 ? least * cone[d + 3] : least * cone[d + 2];
-    const double cone_a = std::fabs(shell_constant_) + shell_b_norm_ * cone[d + 3];
-    if (cone_a < geometry::kFilterOverflow)
-      best = std::max(best, (shell_constant_ + linear) - shell_cone_gamma_ * cone_a - 0x1p-1000);
+  if (!(cos_lo > 0.0)) return -kInfinity;
+  double beta = 0.0;
+  for (int k = 0; k < d; ++k) beta += shell_b_[static_cast<std::size_t>(k)] * cone[k];
+  double perp2 = 0.0;
+  for (int k = 0; k < d; ++k) {
+    const double t = shell_b_[static_cast<std::size_t>(k)] - beta * cone[k];
+    perp2 += t * t;
   }
-  return best;
+  const double least = -beta < (cos_lo - 1e-6) * shell_b_norm_ ? beta * cos_lo - std::sqrt(perp2) * cone[d + 1] : -shell_b_norm_;
+  const double linear = least < 0.0 ? least * cone[d + 3] : least * cone[d + 2];
+  const double cone_a = std::fabs(shell_constant_) + shell_b_norm_ * cone[d + 3];
+  if (!(cone_a < geometry::kFilterOverflow)) return -kInfinity;
+  return (shell_constant_ + linear) - shell_cone_gamma_ * cone_a - 0x1p-1000;
 }
 
 template <int D>
@@ -512,37 +518,40 @@ bool SearchKernel<D>::shell_prunes(std::int32_t node) const {
 
 template <int D>
 void SearchKernel<D>::scan_shell_leaf(std::int32_t begin, std::int32_t end) {
-  // For W > 0 the points go by increasing offset s: sigma I(p, x) >= linear + W S_x, and once
-  // that is certified positive at s, it is at every later point, whose exact offset is no
-  // smaller than s - u |s| - eta. For W < 0, by decreasing offset. The bound: shell_prunes'
-  // roundings, the offset's error u |s| (shell_sum_gamma_ has room) and eta (shell_eta_term_).
-  // A new candidate changes the form (and perhaps W's sign); the points already considered
-  // lie outside its sphere too, or on the closed side, so the scan goes on from the ends.
-  const std::int32_t node = points_.tree.leaf_of(begin);
-  const std::int32_t* ids = shell_->leaf_ids.data();
-  const double* offsets = shell_->leaf_offsets.data();
-  std::int32_t first = begin, last = end;  // the points not yet considered, by position
-  std::int32_t form_of = -1;
-  double linear = 0.0;
-  while (first < last) {
-    if (!shell_form_) {  // the candidate's form could not be computed: the rest one by one
-      for (std::int32_t i = first; i < last; ++i) consider(ids[i]);
-      return;
+  // In a block, for W > 0 the points go by increasing offset s: sigma I(p, x) >= linear + W S_x
+  // (linear: the block cone's bound), and once that is certified positive at s, it is at every
+  // later point, whose exact offset is no smaller than s - u |s| - eta. For W < 0, by
+  // decreasing offset. The bound: shell_prunes' roundings, the offset's error u |s|
+  // (shell_sum_gamma_ has room) and eta (shell_eta_term_). A new candidate changes the form
+  // (and perhaps W's sign); the points already considered lie outside its sphere too, or on
+  // the closed side, so the scan goes on from the block's ends.
+  const std::int32_t* ids = shell_->block_ids.data();
+  const double* offsets = shell_->block_offsets.data();
+  for (std::int32_t block = shell_->first_block[static_cast<std::size_t>(points_.tree.leaf_of(begin))];
+       shell_->block_start[static_cast<std::size_t>(block)] < end; ++block) {
+    std::int32_t first = shell_->block_start[static_cast<std::size_t>(block)], last = shell_->block_start[static_cast<std::size_t>(block) + 1];
+    std::int32_t form_of = -1;  // the candidate whose form `linear` bounds
+    double linear = 0.0;
+    while (first < last) {
+      if (!shell_form_) {  // the candidate's form could not be computed: the rest one by one
+        for (std::int32_t i = first; i < last; ++i) consider(ids[i]);
+        break;
+      }
+      if (form_of != candidate_) {
+        linear = cone_linear_low(shell_->block_cone_of(block));
+        form_of = candidate_;
+      }
+      const double w = shell_lift_;
+      const std::int32_t i = w < 0.0 ? last - 1 : first;
+      if (w != 0.0) {
+        const double ws = w * offsets[i];
+        const double bound = shell_sum_gamma_ * (std::fabs(linear) + std::fabs(ws)) + shell_eta_term_ + 0x1p-1000;
+        if (linear + ws > bound) break;  // false on -infinity and NaN
+      }
+      if (w < 0.0) --last;
+      else ++first;
+      consider(ids[i]);
     }
-    if (form_of != candidate_) {
-      linear = shell_linear_low(node);
-      form_of = candidate_;
-    }
-    const double w = shell_lift_;
-    const std::int32_t i = w < 0.0 ? last - 1 : first;
-    if (w != 0.0) {
-      const double ws = w * offsets[i];
-      const double bound = shell_sum_gamma_ * (std::fabs(linear) + std::fabs(ws)) + shell_eta_term_ + 0x1p-1000;
-      if (linear + ws > bound) return;  // false on -infinity and NaN
-    }
-    if (w < 0.0) --last;
-    else ++first;
-    consider(ids[i]);
   }
 }
 

@@ -155,16 +155,64 @@ double sphere_offset(const double* x, const double* g, int dim, double rho, doub
 
 double offset_error(int dim) { return 4.0 * (3 * dim * (dim + 4) + 3) * geometry::kUnitRoundoff * geometry::kUnitRoundoff; }
 
-// The nodes' cones (SphereShell::cone). Each point's direction e = fl(y / |y|) is within
-// (d + 4) u of the exact one per unit of length and m . e rounds by d u more, so cos_lo, the
-// least computed m . e less (4 d + 16) u, bounds the exact directions; the axis m is within
-// (d + 2) u of unit length, which the (4 d + 16) u added under sin_hi's root covers. |y|
-// rounds by (d + 2) u: r_lo and r_hi take (d + 4) u off and on.
-void fit_cones(const double* coords, int dim, const std::vector<spatial::KdTree::Node>& nodes, const std::vector<double>& g,
-               SphereShell& shell) {
+// A cone (SphereShell::cone) that holds the points [begin, end), around the axis `sum` (their
+// directions' sum). Each point's direction e = fl(y / |y|) is within (d + 4) u of the exact
+// one per unit of length and m . e rounds by d u more, so cos_lo, the least computed m . e
+// less (4 d + 16) u, bounds the exact directions; the axis m is within (d + 2) u of unit
+// length, which the (4 d + 16) u added under sin_hi's root covers. |y| rounds by (d + 2) u:
+// r_lo and r_hi take (d + 4) u off and on.
+void fit_cone(const std::vector<double>& unit, const std::vector<double>& radius, int dim, std::int32_t begin, std::int32_t end,
+              const double* sum, double* cone) {
+  const auto d = static_cast<std::size_t>(dim);
+  const double u = geometry::kUnitRoundoff;
+  double r_lo = std::numeric_limits<double>::infinity(), r_hi = 0.0;
+  for (auto id = static_cast<std::size_t>(begin); id < static_cast<std::size_t>(end); ++id) {
+    r_lo = std::min(r_lo, radius[id]);
+    r_hi = std::max(r_hi, radius[id]);
+  }
+  cone[d + 2] = r_lo * (1 - (dim + 4) * u);
+  cone[d + 3] = r_hi * (1 + (dim + 4) * u);
+  double norm2 = 0.0;
+  for (std::size_t k = 0; k < d; ++k) norm2 += sum[k] * sum[k];
+  const double norm = std::sqrt(norm2);
+  double cos_lo = -2.0;
+  if (norm > 0.0 && r_lo > 0.0) {
+    for (std::size_t k = 0; k < d; ++k) cone[k] = sum[k] / norm;
+    cos_lo = 1.0;
+    for (auto id = static_cast<std::size_t>(begin); id < static_cast<std::size_t>(end); ++id) {
+      double dot = 0.0;
+      for (std::size_t k = 0; k < d; ++k) dot += cone[k] * unit[id * d + k];
+      cos_lo = std::min(cos_lo, dot);
+    }
+    cos_lo -= (4 * dim + 16) * u;
+    if (!(cos_lo > 0.0)) cos_lo = -2.0;  // wider than a half-space: the box does as well
+  }
+  cone[d] = cos_lo;
+  cone[d + 1] = cos_lo > 0.0 ? std::sqrt(1.0 - cos_lo * cos_lo + (4 * dim + 16) * u) * (1 + 4 * u) : 1.0;
+}
+
+// Cuts [begin, end) the way the build orders a leaf (halving, down to `size` points): appends
+// the blocks' first positions.
+void cut_blocks(std::int32_t begin, std::int32_t end, std::int32_t size, std::vector<std::int32_t>& starts) {
+  if (end - begin <= size) {
+    starts.push_back(begin);
+    return;
+  }
+  const std::int32_t middle = begin + (end - begin) / 2;
+  cut_blocks(begin, middle, size, starts);
+  cut_blocks(middle, end, size, starts);
+}
+
+// The blocks' size: on a circle a leaf's cone bounds its points well enough (with blocks of
+// 8, the circle of 80 000 points took 0.213 s in the search instead of 0.201), on a sphere
+// blocks of 8 test a fifth of the points (3D, 32 000 points: 0.604 -> 0.536 s).
+std::int32_t block_size(int dim) { return dim == 2 ? std::numeric_limits<std::int32_t>::max() : spatial::KdTree::kOrderLeafSize; }
+
+// The nodes' cones, the blocks and their cones, and the blocks' points by offset.
+void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spatial::KdTree::Node>& nodes,
+                          const std::vector<double>& g, SphereShell& shell) {
   const auto d = static_cast<std::size_t>(dim);
   const std::size_t n = shell.offset.size(), stride = d + 4;
-  const double u = geometry::kUnitRoundoff;
   std::vector<double> unit(n * d), radius(n);
   for (std::size_t id = 0; id < n; ++id) {
     double r2 = 0.0;
@@ -176,63 +224,51 @@ void fit_cones(const double* coords, int dim, const std::vector<spatial::KdTree:
     radius[id] = std::sqrt(r2);
     for (std::size_t k = 0; k < d; ++k) unit[id * d + k] = radius[id] > 0.0 ? unit[id * d + k] / radius[id] : 0.0;
   }
-  // The axes: each node's sum of its points' directions (children before parents: preorder
-  // backwards), normalised.
+  // The nodes' axes: the sums of their points' directions (children before parents: preorder
+  // backwards).
   std::vector<double> sum(nodes.size() * d, 0.0);
   shell.cone.assign(nodes.size() * stride, 0.0);
+  shell.first_block.assign(nodes.size(), -1);
   for (std::size_t i = nodes.size(); i-- > 0;) {
     const spatial::KdTree::Node& node = nodes[i];
     double* s = &sum[i * d];
-    double* cone = &shell.cone[i * stride];
-    double r_lo = std::numeric_limits<double>::infinity(), r_hi = 0.0;
     if (node.right < 0) {
-      for (auto id = static_cast<std::size_t>(node.begin); id < static_cast<std::size_t>(node.end); ++id) {
+      for (auto id = static_cast<std::size_t>(node.begin); id < static_cast<std::size_t>(node.end); ++id)
         for (std::size_t k = 0; k < d; ++k) s[k] += unit[id * d + k];
-        r_lo = std::min(r_lo, radius[id]);
-        r_hi = std::max(r_hi, radius[id]);
-      }
     } else {
       const std::size_t left = i + 1, right = static_cast<std::size_t>(node.right);
       for (std::size_t k = 0; k < d; ++k) s[k] = sum[left * d + k] + sum[right * d + k];
-      r_lo = std::min(shell.cone[left * stride + d + 2], shell.cone[right * stride + d + 2]);
-      r_hi = std::max(shell.cone[left * stride + d + 3], shell.cone[right * stride + d + 3]);
     }
-    cone[d + 2] = r_lo * (1 - (dim + 4) * u);
-    cone[d + 3] = r_hi * (1 + (dim + 4) * u);
-    double norm2 = 0.0;
-    for (std::size_t k = 0; k < d; ++k) norm2 += s[k] * s[k];
-    const double norm = std::sqrt(norm2);
-    double cos_lo = -2.0;
-    if (norm > 0.0 && r_lo > 0.0) {
-      for (std::size_t k = 0; k < d; ++k) cone[k] = s[k] / norm;
-      cos_lo = 1.0;
-      for (auto id = static_cast<std::size_t>(node.begin); id < static_cast<std::size_t>(node.end); ++id) {
-        double dot = 0.0;
-        for (std::size_t k = 0; k < d; ++k) dot += cone[k] * unit[id * d + k];
-        cos_lo = std::min(cos_lo, dot);
-      }
-      cos_lo -= (4 * dim + 16) * u;
-      if (!(cos_lo > 0.0)) cos_lo = -2.0;  // wider than a half-space: the box does as well
-    }
-    cone[d] = cos_lo;
-    cone[d + 1] = cos_lo > 0.0 ? std::sqrt(1.0 - cos_lo * cos_lo + (4 * dim + 16) * u) * (1 + 4 * u) : 1.0;
+    fit_cone(unit, radius, dim, node.begin, node.end, s, &shell.cone[i * stride]);
   }
-}
-
-// SphereShell::leaf_ids and leaf_offsets.
-void sort_leaves(const std::vector<spatial::KdTree::Node>& nodes, SphereShell& shell) {
-  shell.leaf_ids.resize(shell.offset.size());
-  shell.leaf_offsets.resize(shell.offset.size());
-  for (const spatial::KdTree::Node& node : nodes) {
-    if (node.right >= 0) continue;
-    const auto first = shell.leaf_ids.begin() + node.begin, last = shell.leaf_ids.begin() + node.end;
-    std::iota(first, last, node.begin);
-    std::sort(first, last, [&](std::int32_t a, std::int32_t b) {
-      const double sa = shell.offset[static_cast<std::size_t>(a)], sb = shell.offset[static_cast<std::size_t>(b)];
-      return sa < sb || (sa == sb && a < b);
+  // The blocks, leaf by leaf: preorder lists the leaves by position (a left child's points
+  // come first), so block_start increases.
+  shell.block_start.clear();
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (nodes[i].right >= 0) continue;
+    shell.first_block[i] = static_cast<std::int32_t>(shell.block_start.size());
+    cut_blocks(nodes[i].begin, nodes[i].end, block_size(dim), shell.block_start);
+  }
+  shell.block_start.push_back(static_cast<std::int32_t>(n));
+  const std::size_t blocks = shell.block_start.size() - 1;
+  shell.block_cone.assign(blocks * stride, 0.0);
+  shell.block_ids.resize(n);
+  shell.block_offsets.resize(n);
+  std::vector<double> block_sum(d);
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::int32_t begin = shell.block_start[b], end = shell.block_start[b + 1];
+    std::fill(block_sum.begin(), block_sum.end(), 0.0);
+    for (auto id = static_cast<std::size_t>(begin); id < static_cast<std::size_t>(end); ++id)
+      for (std::size_t k = 0; k < d; ++k) block_sum[k] += unit[id * d + k];
+    fit_cone(unit, radius, dim, begin, end, block_sum.data(), &shell.block_cone[b * stride]);
+    const auto first = shell.block_ids.begin() + begin, last = shell.block_ids.begin() + end;
+    std::iota(first, last, begin);
+    std::sort(first, last, [&](std::int32_t a, std::int32_t c) {
+      const double sa = shell.offset[static_cast<std::size_t>(a)], sc = shell.offset[static_cast<std::size_t>(c)];
+      return sa < sc || (sa == sc && a < c);
     });
-    for (std::int32_t i = node.begin; i < node.end; ++i)
-      shell.leaf_offsets[static_cast<std::size_t>(i)] = shell.offset[static_cast<std::size_t>(shell.leaf_ids[static_cast<std::size_t>(i)])];
+    for (std::int32_t i = begin; i < end; ++i)
+      shell.block_offsets[static_cast<std::size_t>(i)] = shell.offset[static_cast<std::size_t>(shell.block_ids[static_cast<std::size_t>(i)])];
   }
 }
 
@@ -288,8 +324,7 @@ SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, cons
     shell.range[2 * i] = lo;
     shell.range[2 * i + 1] = hi;
   }
-  fit_cones(coords, dim, nodes, sphere.centre, shell);
-  sort_leaves(nodes, shell);
+  fit_cones_and_blocks(coords, dim, nodes, sphere.centre, shell);
   shell.centre = std::move(sphere.centre);
   return shell;
 }

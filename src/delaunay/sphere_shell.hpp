@@ -48,15 +48,21 @@ struct SphereShell {
   // sphere the node's points lie on an arc or a cap, which its box bounds loosely: the cone
   // bounds the form's linear term over them tightly (facet_search.cpp, shell_cone_low).
   std::vector<double> cone;
-  // Per kd-tree leaf [begin, end): its point ids by increasing offset (leaf_ids[begin..end)),
-  // and those offsets: the leaf scan tests only the points whose offset can still beat the
-  // candidate (facet_search.cpp, scan_shell_leaf).
-  std::vector<std::int32_t> leaf_ids;
-  std::vector<double> leaf_offsets;
+  // Each leaf cut into blocks the way the build orders its points (halving down to
+  // KdTree::kOrderLeafSize points: near points): block b is [block_start[b], block_start[b +
+  // 1]), a leaf's blocks start at first_block[leaf] (-1 for inner nodes); each block's cone
+  // (as `cone`), and its point ids by increasing offset (block_ids over the block's
+  // positions) with those offsets. The leaf scan tests, block by block, only the points whose
+  // offset can still beat the candidate (facet_search.cpp, scan_shell_leaf).
+  std::vector<std::int32_t> block_start, first_block;
+  std::vector<double> block_cone;
+  std::vector<std::int32_t> block_ids;
+  std::vector<double> block_offsets;
 
   bool active() const { return !centre.empty(); }
   const double* of(std::int32_t node) const { return &range[2 * static_cast<std::size_t>(node)]; }
   const double* cone_of(std::int32_t node) const { return &cone[static_cast<std::size_t>(node) * (centre.size() + 4)]; }
+  const double* block_cone_of(std::int32_t block) const { return &block_cone[static_cast<std::size_t>(block) * (centre.size() + 4)]; }
 };
 
 // The shell of `n` points of dimension `dim` (row-major, in the tree's order: node ranges are
