@@ -227,6 +227,74 @@ TEST(SphereShell, LiftedFormEqualsTheLiftedDeterminant) {
   }
 }
 
+TEST(SphereShell, FloatFormIsWithinItsBoundsOfTheExactForm) {
+  // The exact coefficients from the lifted determinant's cofactors along x's row (C_c for the
+  // spatial columns, C_L for the lift), rewritten around g: B_c = C_c - 2 C_L y0_c, W = C_L,
+  // K = C_L (rho + |y0|^2) - C . y0 with y0 = f0 - g. Each float coefficient must be within
+  // its bound of them; and most simplices must get a float form at all.
+  drange::test::TestRandom random(41);
+  for (int d : {2, 3}) {
+    for (double noise : {0.0, 1e-12, 1e-9}) {
+      const auto store = store_of(sphere(3000, d, 42 + static_cast<std::uint64_t>(d), 1.5, 0.25, noise));
+      const drange::engine::SphereShell& shell = store.shell;
+      ASSERT_TRUE(shell.active());
+      int accepted = 0;
+      const int trials = 200;
+      for (int trial = 0; trial < trials; ++trial) {
+        // d + 1 points near each other (a random point and the next ids: neighbours in the tree).
+        const auto first = static_cast<std::int32_t>(random.uniform() * (store.size - d - 40));
+        std::vector<std::int32_t> ids;
+        for (int i = 0; i <= d; ++i) ids.push_back(first + i * (1 + trial % 13));
+        const double* f0 = store.point(ids[0]);
+        std::vector<const double*> rows;
+        std::vector<double> row_offsets;
+        for (int i = 1; i <= d; ++i) {
+          rows.push_back(store.point(ids[static_cast<std::size_t>(i)]));
+          row_offsets.push_back(shell.offset[static_cast<std::size_t>(ids[static_cast<std::size_t>(i)])]);
+        }
+        drange::engine::FloatForm form{};
+        if (!drange::engine::float_form(shell, d, f0, shell.offset[static_cast<std::size_t>(ids[0])], rows.data(), row_offsets.data(),
+                                        form))
+          continue;
+        ++accepted;
+        // Cofactors of the last row of the (d + 1) x (d + 1) lifted matrix, exactly.
+        std::vector<std::vector<mpq_class>> r(static_cast<std::size_t>(d));
+        for (int i = 0; i < d; ++i) {
+          mpq_class lift = 0;
+          for (int k = 0; k < d; ++k) {
+            const mpq_class delta = mpq_class(rows[static_cast<std::size_t>(i)][k]) - mpq_class(f0[k]);
+            r[static_cast<std::size_t>(i)].push_back(delta);
+            lift += delta * delta;
+          }
+          r[static_cast<std::size_t>(i)].push_back(lift);
+        }
+        std::vector<mpq_class> cofactor(static_cast<std::size_t>(d + 1));
+        for (int j = 0; j <= d; ++j) {
+          std::vector<mpq_class> minor;
+          for (int i = 0; i < d; ++i)
+            for (int c = 0; c <= d; ++c)
+              if (c != j) minor.push_back(r[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)]);
+          const mpq_class m = drange::test::reference_determinant(minor, d);
+          cofactor[static_cast<std::size_t>(j)] = ((d + j) % 2 == 0) ? m : mpq_class(-m);
+        }
+        const mpq_class& cl = cofactor[static_cast<std::size_t>(d)];
+        mpq_class y0_2 = 0, k_exact = 0;
+        for (int c = 0; c < d; ++c) {
+          const mpq_class y0 = mpq_class(f0[c]) - mpq_class(shell.centre[static_cast<std::size_t>(c)]);
+          y0_2 += y0 * y0;
+          k_exact -= cofactor[static_cast<std::size_t>(c)] * y0;
+          const mpq_class b_exact = cofactor[static_cast<std::size_t>(c)] - 2 * cl * y0;
+          ASSERT_LE(abs(mpq_class(form.b[c]) - b_exact), mpq_class(form.b_err[c])) << "d=" << d << " noise " << noise << " trial " << trial;
+        }
+        k_exact += cl * (mpq_class(shell.rho) + y0_2);
+        ASSERT_LE(abs(mpq_class(form.lift) - cl), mpq_class(form.lift_err)) << "d=" << d << " trial " << trial;
+        ASSERT_LE(abs(mpq_class(form.constant) - k_exact), mpq_class(form.constant_err)) << "d=" << d << " trial " << trial;
+      }
+      EXPECT_GT(accepted, trials * 9 / 10) << "d=" << d << " noise " << noise;
+    }
+  }
+}
+
 std::vector<drange::test::Simplex> canonical(const drange::Triangulation& t) { return drange::test::canonical(t.simplices, t.dim); }
 
 drange::Triangulation triangulate(const PointCloud& points, const char* variant) {

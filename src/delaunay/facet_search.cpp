@@ -146,6 +146,10 @@ class SearchKernel final : public FacetSearch::Kernel {
   // tests that use it: a point's sign of sigma I(p, x) (0 when undecided), and a node's proof
   // that none of its points beats the candidate.
   void set_shell_form();
+  // The form in floating point (sphere_shell.hpp, float_form; d = 2, 3) with its coefficients'
+  // error bounds; false where that declines or the arithmetic under- or overflowed: then
+  // set_shell_form asks GMP. 3D sphere, 32 000 points: time_search 0.545 -> 0.236 s.
+  bool float_shell_form();
   int shell_sign(std::int32_t id) const;
   bool shell_prunes(std::int32_t node) const;
   // A lower bound of the form's linear part, B . y + K, over the node's points: the larger of
@@ -230,6 +234,10 @@ class SearchKernel final : public FacetSearch::Kernel {
   double shell_lift_ = 0.0, shell_constant_ = 0.0;
   double shell_eta_term_ = 0.0;  // |lift| times the error bound of the points' offsets, with margin
   double shell_b_norm_ = 0.0;    // an upper bound of |b|
+  // Bounds of |B_k - b_k|, |W - lift|, |K - constant| beyond the truncation that the gammas
+  // cover (nonzero for float_shell_form's coefficients), and the sum of the first.
+  std::array<double, kMaxRow> shell_b_err_{};
+  double shell_lift_err_ = 0.0, shell_constant_err_ = 0.0, shell_b_err_sum_ = 0.0;
   // Error bound factors of shell_sign, shell_prunes and shell_linear_low (see there).
   double shell_point_gamma_ = 0.0, shell_node_gamma_ = 0.0, shell_cone_gamma_ = 0.0, shell_sum_gamma_ = 0.0;
 
@@ -414,17 +422,45 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
 template <int D>
 void SearchKernel<D>::set_shell_form() {
   const int d = dim();
-  const geometry::Frame frame{d, d, nullptr, f0_};
-  shell_form_ = geometry::exact_lifted_form(frame, rows_.data(), shell_->centre.data(), shell_->rho, shell_b_.data(),
-                                            &shell_lift_, &shell_constant_);
-  if (!shell_form_) return;
+  shell_form_ = float_shell_form();
+  if (!shell_form_) {
+    const geometry::Frame frame{d, d, nullptr, f0_};
+    shell_form_ = geometry::exact_lifted_form(frame, rows_.data(), shell_->centre.data(), shell_->rho, shell_b_.data(),
+                                              &shell_lift_, &shell_constant_);
+    if (!shell_form_) return;
+    shell_b_err_.fill(0.0);
+    shell_lift_err_ = shell_constant_err_ = shell_b_err_sum_ = 0.0;
+  }
   for (int k = 0; k < d; ++k) shell_b_[static_cast<std::size_t>(k)] *= sigma_;
   shell_lift_ *= sigma_;
   shell_constant_ *= sigma_;
-  shell_eta_term_ = 1.01 * std::fabs(shell_lift_) * shell_->eta;
+  shell_eta_term_ = 1.01 * (std::fabs(shell_lift_) + shell_lift_err_) * shell_->eta;
   double b2 = 0.0;
   for (int k = 0; k < d; ++k) b2 += shell_b_[static_cast<std::size_t>(k)] * shell_b_[static_cast<std::size_t>(k)];
   shell_b_norm_ = std::sqrt(b2) * (1 + geometry::gamma_bound(d + 2));
+}
+
+template <int D>
+bool SearchKernel<D>::float_shell_form() {
+  const int d = dim();
+  if (d > kFloatFormMaxDim) return false;
+  std::array<double, kMaxRow> row_offsets{};
+  for (int i = 0; i < d; ++i)
+    row_offsets[static_cast<std::size_t>(i)] = shell_->offset[static_cast<std::size_t>(i < d - 1 ? facet_[i + 1] : candidate_)];
+  FloatForm form;
+  const geometry::FloatingPointWatch watch;
+  const bool good = float_form(*shell_, d, f0_, shell_->offset[static_cast<std::size_t>(facet_[0])], rows_.data(), row_offsets.data(), form);
+  if (!good || !watch.clean()) return false;
+  for (int k = 0; k < d; ++k) {
+    shell_b_[static_cast<std::size_t>(k)] = form.b[k];
+    shell_b_err_[static_cast<std::size_t>(k)] = form.b_err[k];
+  }
+  shell_lift_ = form.lift;
+  shell_constant_ = form.constant;
+  shell_lift_err_ = form.lift_err;
+  shell_constant_err_ = form.constant_err;
+  shell_b_err_sum_ = form.b_err_sum;
+  return true;
 }
 
 template <int D>
@@ -440,16 +476,19 @@ int SearchKernel<D>::shell_sign(std::int32_t id) const {
   const double* x = points_.point(id);
   const double* g = shell_->centre.data();
   const double offset = shell_->offset[static_cast<std::size_t>(id)];
-  double v = shell_constant_, a = std::fabs(shell_constant_);
+  double v = shell_constant_, a = std::fabs(shell_constant_), coefficients = shell_constant_err_;
   for (int k = 0; k < d; ++k) {
     const double y = x[k] - g[k];
     v += shell_b_[static_cast<std::size_t>(k)] * y;
     a += std::fabs(shell_b_[static_cast<std::size_t>(k)]) * std::fabs(y);
+    coefficients += shell_b_err_[static_cast<std::size_t>(k)] * std::fabs(y);
   }
   v += shell_lift_ * offset;
   a += std::fabs(shell_lift_) * std::fabs(offset);
+  coefficients += shell_lift_err_ * (std::fabs(offset) + shell_->eta);
   if (!(a < geometry::kFilterOverflow)) return 0;  // also NaN
-  const double bound = shell_point_gamma_ * a + shell_eta_term_ + 0x1p-1000;
+  // The coefficients' errors (float_shell_form; 0 for GMP's) at |y| and |s_x| + eta.
+  const double bound = shell_point_gamma_ * a + shell_eta_term_ + 1.01 * coefficients + 0x1p-1000;
   if (v > bound) return 1;
   if (v < -bound) return -1;
   return 0;
@@ -465,15 +504,17 @@ double SearchKernel<D>::shell_linear_low(std::int32_t node) const {
   const double* lo = points_.tree.template lower<D>(node);
   const double* hi = points_.tree.template upper<D>(node);
   const double* g = shell_->centre.data();
-  double low = shell_constant_, a = std::fabs(shell_constant_);
+  double low = shell_constant_, a = std::fabs(shell_constant_), coefficients = shell_constant_err_;
   for (int k = 0; k < d; ++k) {
     const double b = shell_b_[static_cast<std::size_t>(k)];
     const double ylo = lo[k] - g[k], yhi = hi[k] - g[k];
     low += std::min(b * ylo, b * yhi);
-    a += std::fabs(b) * std::max(std::fabs(ylo), std::fabs(yhi));
+    const double y = std::max(std::fabs(ylo), std::fabs(yhi));
+    a += std::fabs(b) * y;
+    coefficients += shell_b_err_[static_cast<std::size_t>(k)] * y;
   }
   if (!(a < geometry::kFilterOverflow)) return -kInfinity;  // also NaN
-  double best = low - shell_node_gamma_ * a - 0x1p-1000;
+  double best = low - shell_node_gamma_ * a - 1.01 * coefficients - 0x1p-1000;
   return std::max(best, cone_linear_low(shell_->cone_of(node)));
 }
 
@@ -499,7 +540,9 @@ double SearchKernel<D>::cone_linear_low(const double* cone) const {
   const double linear = least < 0.0 ? least * cone[d + 3] : least * cone[d + 2];
   const double cone_a = std::fabs(shell_constant_) + shell_b_norm_ * cone[d + 3];
   if (!(cone_a < geometry::kFilterOverflow)) return -kInfinity;
-  return (shell_constant_ + linear) - shell_cone_gamma_ * cone_a - 0x1p-1000;
+  // The coefficients' errors: |(B - b) . y| <= sum |B_k - b_k| |y| <= shell_b_err_sum_ r_hi.
+  const double coefficients = shell_b_err_sum_ * cone[d + 3] + shell_constant_err_;
+  return (shell_constant_ + linear) - shell_cone_gamma_ * cone_a - 1.01 * coefficients - 0x1p-1000;
 }
 
 template <int D>
@@ -512,8 +555,9 @@ bool SearchKernel<D>::shell_prunes(std::int32_t node) const {
   const double linear = shell_linear_low(node);
   const double* range = shell_->of(node);
   const double low = linear + std::min(shell_lift_ * range[0], shell_lift_ * range[1]);
-  const double a = std::fabs(linear) + std::fabs(shell_lift_) * std::max(std::fabs(range[0]), std::fabs(range[1]));
-  return low > shell_sum_gamma_ * a + 0x1p-1000;  // false on -infinity and NaN
+  const double largest = std::max(std::fabs(range[0]), std::fabs(range[1]));
+  const double a = std::fabs(linear) + std::fabs(shell_lift_) * largest;
+  return low > shell_sum_gamma_ * a + 1.01 * shell_lift_err_ * largest + 0x1p-1000;  // false on -infinity and NaN
 }
 
 template <int D>
@@ -545,7 +589,8 @@ void SearchKernel<D>::scan_shell_leaf(std::int32_t begin, std::int32_t end) {
       const std::int32_t i = w < 0.0 ? last - 1 : first;
       if (w != 0.0) {
         const double ws = w * offsets[i];
-        const double bound = shell_sum_gamma_ * (std::fabs(linear) + std::fabs(ws)) + shell_eta_term_ + 0x1p-1000;
+        const double bound = shell_sum_gamma_ * (std::fabs(linear) + std::fabs(ws)) + shell_eta_term_ +
+                             1.01 * shell_lift_err_ * (std::fabs(offsets[i]) + shell_->eta) + 0x1p-1000;
         if (linear + ws > bound) break;  // false on -infinity and NaN
       }
       if (w < 0.0) --last;

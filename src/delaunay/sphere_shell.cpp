@@ -329,4 +329,91 @@ SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, cons
   return shell;
 }
 
+bool float_form(const SphereShell& shell, int d, const double* f0, double s0, const double* const* rows, const double* row_offsets,
+                FloatForm& form) {
+  // With S_x = |x - g|^2 - rho, |x - f0|^2 = (S_x - S_0) - 2 (f0 - g) . (x - f0): the lift
+  // column less a combination of the spatial ones, so the lifted determinant is
+  //   det[p_i - f0, S_i - S_0 (i = 1..d); x - f0, S_x - S_0].
+  // Along its last row, with A the d x d matrix of the p_i - f0 and s_i = S_i - S_0:
+  //   b = -adj(A) s,  lift = det A,  constant = -b . (f0 - g) - lift S_0.
+  // On points near the sphere the s_i are tiny and b is computed to a few units of its own
+  // terms, where the exact form's cofactors cancel. (The stored offsets' errors, u |s| + eta,
+  // are a few hundred units of an offset: far below what the shell's tests resolve.)
+  // Error bounds, each against the exact coefficients (exact points and offsets):
+  //   the entries a = fl(p - f0) are within u |a| (1 + u); an adjugate entry alpha (d = 3: a
+  //   2 x 2 minor, cyclic indices) within gamma(5) of its absolute tree tau (gamma(2) in 2D);
+  //   e_i >= |fl(s_i - s_0) - (S_i - S_0)| = 1.01 u |s^_i| + u (|s_i| + |s_0|) + 2 eta;
+  //   |B_c - b_c| <= gamma(d + m + 2) sum tau |s^| + (1 + gamma(m + 2)) sum tau e;
+  //   |W - lift| <= gamma(m + d + 2) sum |a| tau over the candidate's row;
+  //   K: the sum's roundings, the b and y0 errors, W's error and the offset S_0's error.
+  // Each bound is evaluated with a margin for its own roundings.
+  if (d != 2 && d != 3) return false;
+  constexpr double u = geometry::kUnitRoundoff;
+  const double eta = shell.eta;
+  double a[3][3], sh[3], e[3];
+  for (int i = 0; i < d; ++i) {
+    const double* p = rows[i];
+    for (int c = 0; c < d; ++c) a[i][c] = p[c] - f0[c];
+    const double si = row_offsets[i];
+    sh[i] = si - s0;
+    e[i] = (1.01 * u * std::fabs(sh[i]) + u * (std::fabs(si) + std::fabs(s0)) + 2 * eta) * (1 + 8 * u);
+  }
+  double alpha[3][3], tau[3][3];  // adj(A)[c][i] = cofactor (i, c)
+  int m = 2;
+  if (d == 2) {
+    alpha[0][0] = a[1][1], alpha[0][1] = -a[0][1], alpha[1][0] = -a[1][0], alpha[1][1] = a[0][0];
+    for (int c = 0; c < 2; ++c)
+      for (int i = 0; i < 2; ++i) tau[c][i] = std::fabs(alpha[c][i]);
+  } else {
+    m = 5;
+    for (int c = 0; c < 3; ++c)
+      for (int i = 0; i < 3; ++i) {
+        const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+        alpha[c][i] = a[i1][c1] * a[i2][c2] - a[i1][c2] * a[i2][c1];
+        tau[c][i] = std::fabs(a[i1][c1]) * std::fabs(a[i2][c2]) + std::fabs(a[i1][c2]) * std::fabs(a[i2][c1]);
+      }
+  }
+  const double margin = 1 + geometry::gamma_bound(4 * d + 4);
+  double b_sum = 0.0, b_err_sum = 0.0;
+  for (int c = 0; c < d; ++c) {
+    double v = 0.0, t = 0.0, r = 0.0;
+    for (int i = 0; i < d; ++i) {
+      v += alpha[c][i] * sh[i];
+      t += tau[c][i] * std::fabs(sh[i]);
+      r += tau[c][i] * e[i];
+    }
+    form.b[c] = -v;
+    const double err = (geometry::gamma_bound(d + m + 2) * t + (1 + geometry::gamma_bound(m + 2)) * r) * margin;
+    form.b_err[c] = err;
+    b_sum += std::fabs(v);
+    b_err_sum += err;
+  }
+  double w = 0.0, w_tree = 0.0;
+  for (int c = 0; c < d; ++c) {
+    w += a[d - 1][c] * alpha[c][d - 1];
+    w_tree += std::fabs(a[d - 1][c]) * tau[c][d - 1];
+  }
+  const double w_err = geometry::gamma_bound(m + d + 2) * w_tree * margin;
+  const double* g = shell.centre.data();
+  double k = -w * s0, k_tree = std::fabs(w) * std::fabs(s0), k_err = 0.0;
+  for (int c = 0; c < d; ++c) {
+    const double y0 = f0[c] - g[c];
+    const double b = form.b[c];
+    k -= b * y0;
+    k_tree += std::fabs(b) * std::fabs(y0);
+    k_err += (form.b_err[c] + 1.01 * u * (std::fabs(b) + form.b_err[c])) *
+             std::fabs(y0) * (1 + 2 * u);
+  }
+  k_err = (k_err + geometry::gamma_bound(d + 3) * k_tree + w_err * std::fabs(s0) + (std::fabs(w) + w_err) * (u * std::fabs(s0) + eta)) * margin;
+  if (!(k_tree + k_err < geometry::kFilterOverflow && std::fabs(w) + b_sum < geometry::kFilterOverflow)) return false;
+  constexpr double kSmall = 0x1p-30;  // the bounds' share of their terms that keeps the shell's tests sharp
+  if (!(w_err <= kSmall * std::fabs(w) && b_err_sum <= kSmall * b_sum && k_err <= kSmall * (k_tree + std::fabs(k)))) return false;
+  form.lift = w;
+  form.constant = k;
+  form.lift_err = w_err;
+  form.constant_err = k_err;
+  form.b_err_sum = b_err_sum;
+  return true;
+}
+
 }  // namespace drange::engine

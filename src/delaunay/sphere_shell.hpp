@@ -65,6 +65,22 @@ struct SphereShell {
   const double* block_cone_of(std::int32_t block) const { return &block_cone[static_cast<std::size_t>(block) * (centre.size() + 4)]; }
 };
 
+// The lifted determinant det[r_1; ...; r_d; r_x] (rows relative to f0, as in
+// geometry::exact_lifted_form) as b . (x - g) + lift (|x - g|^2 - rho) + constant, computed in
+// floating point from the points' offsets, with bounds of each coefficient's distance to the
+// exact one: for d = 2 and 3. `rows` are the d points after f0, `s0` and `row_offsets` their
+// offsets (SphereShell::offset). False when a bound is not small against its terms (a
+// near-flat simplex, or points exactly on the fitted sphere, where b is 0) or a value is too
+// large; the caller also watches the floating-point flags (an underflow voids the bounds).
+constexpr int kFloatFormMaxDim = 3;
+struct FloatForm {
+  double b[kFloatFormMaxDim], b_err[kFloatFormMaxDim];
+  double lift, lift_err, constant, constant_err;
+  double b_err_sum;  // sum of b_err
+};
+bool float_form(const SphereShell& shell, int d, const double* f0, double s0, const double* const* rows, const double* row_offsets,
+                FloatForm& form);
+
 // The shell of `n` points of dimension `dim` (row-major, in the tree's order: node ranges are
 // point ids), or an inactive one when fewer than 9 in 10 of them lie within a relative 2^-10
 // of the fitted sphere's squared radius.
