@@ -272,6 +272,28 @@ void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spati
   }
 }
 
+// The determinant of the k x k submatrix of `a` on `rows` and `columns` (k <= 3) by Laplace
+// expansion along its first row, and the same expansion on absolute values (its error bound's
+// tree: within gamma(laplace_roundings(k, 1)) of it when each entry carries one rounding).
+void minor_of(const double (*a)[kFloatFormMaxDim], const int* rows, const int* columns, int k, double& value, double& tree) {
+  if (k == 1) {
+    value = a[rows[0]][columns[0]];
+    tree = std::fabs(value);
+    return;
+  }
+  value = tree = 0.0;
+  for (int j = 0; j < k; ++j) {
+    int rest[kFloatFormMaxDim];
+    for (int t = 0, o = 0; t < k; ++t)
+      if (t != j) rest[o++] = columns[t];
+    double v = 0.0, t = 0.0;
+    minor_of(a, rows + 1, rest, k - 1, v, t);
+    const double entry = a[rows[0]][columns[j]];
+    value += (j % 2 ? -entry : entry) * v;
+    tree += std::fabs(entry) * t;
+  }
+}
+
 }  // namespace
 
 SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree) {
@@ -340,17 +362,19 @@ bool float_form(const SphereShell& shell, int d, const double* f0, double s0, co
   // terms, where the exact form's cofactors cancel. (The stored offsets' errors, u |s| + eta,
   // are a few hundred units of an offset: far below what the shell's tests resolve.)
   // Error bounds, each against the exact coefficients (exact points and offsets):
-  //   the entries a = fl(p - f0) are within u |a| (1 + u); an adjugate entry alpha (d = 3: a
-  //   2 x 2 minor, cyclic indices) within gamma(5) of its absolute tree tau (gamma(2) in 2D);
+  //   the entries a = fl(p - f0) are within u |a| (1 + u); an adjugate entry alpha (a
+  //   (d - 1)-minor by Laplace expansion) within gamma(m) of its absolute tree tau, m =
+  //   laplace_roundings(d - 1, 1);
   //   e_i >= |fl(s_i - s_0) - (S_i - S_0)| = 1.01 u |s^_i| + u (|s_i| + |s_0|) + 2 eta;
   //   |B_c - b_c| <= gamma(d + m + 2) sum tau |s^| + (1 + gamma(m + 2)) sum tau e;
-  //   |W - lift| <= gamma(m + d + 2) sum |a| tau over the candidate's row;
+  //   |W - lift| <= gamma(laplace_roundings(d, 1)) sum |a| tau over the candidate's row (W is
+  //   A's Laplace expansion along that row);
   //   K: the sum's roundings, the b and y0 errors, W's error and the offset S_0's error.
   // Each bound is evaluated with a margin for its own roundings.
-  if (d != 2 && d != 3) return false;
+  if (d < 2 || d > kFloatFormMaxDim) return false;
   constexpr double u = geometry::kUnitRoundoff;
   const double eta = shell.eta;
-  double a[3][3], sh[3], e[3];
+  double a[kFloatFormMaxDim][kFloatFormMaxDim], sh[kFloatFormMaxDim], e[kFloatFormMaxDim];
   for (int i = 0; i < d; ++i) {
     const double* p = rows[i];
     for (int c = 0; c < d; ++c) a[i][c] = p[c] - f0[c];
@@ -358,21 +382,33 @@ bool float_form(const SphereShell& shell, int d, const double* f0, double s0, co
     sh[i] = si - s0;
     e[i] = (1.01 * u * std::fabs(sh[i]) + u * (std::fabs(si) + std::fabs(s0)) + 2 * eta) * (1 + 8 * u);
   }
-  double alpha[3][3], tau[3][3];  // adj(A)[c][i] = cofactor (i, c)
-  int m = 2;
+  double alpha[kFloatFormMaxDim][kFloatFormMaxDim], tau[kFloatFormMaxDim][kFloatFormMaxDim];  // adj(A)[c][i] = cofactor (i, c)
   if (d == 2) {
     alpha[0][0] = a[1][1], alpha[0][1] = -a[0][1], alpha[1][0] = -a[1][0], alpha[1][1] = a[0][0];
     for (int c = 0; c < 2; ++c)
       for (int i = 0; i < 2; ++i) tau[c][i] = std::fabs(alpha[c][i]);
-  } else {
-    m = 5;
+  } else if (d == 3) {  // the cofactors by cyclic indices (the sign comes with them)
     for (int c = 0; c < 3; ++c)
       for (int i = 0; i < 3; ++i) {
         const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
         alpha[c][i] = a[i1][c1] * a[i2][c2] - a[i1][c2] * a[i2][c1];
         tau[c][i] = std::fabs(a[i1][c1]) * std::fabs(a[i2][c2]) + std::fabs(a[i1][c2]) * std::fabs(a[i2][c1]);
       }
+  } else {  // d = 4: the cofactors as 3 x 3 minors
+    for (int c = 0; c < d; ++c)
+      for (int i = 0; i < d; ++i) {
+        int rows_left[kFloatFormMaxDim], columns_left[kFloatFormMaxDim];
+        for (int t = 0, r = 0, k = 0; t < d; ++t) {
+          if (t != i) rows_left[r++] = t;
+          if (t != c) columns_left[k++] = t;
+        }
+        double value = 0.0, tree = 0.0;
+        minor_of(a, rows_left, columns_left, d - 1, value, tree);
+        alpha[c][i] = (i + c) % 2 ? -value : value;
+        tau[c][i] = tree;
+      }
   }
+  const int m = geometry::laplace_roundings(d - 1, 1);
   const double margin = 1 + geometry::gamma_bound(4 * d + 4);
   double b_sum = 0.0, b_err_sum = 0.0;
   for (int c = 0; c < d; ++c) {
@@ -393,7 +429,7 @@ bool float_form(const SphereShell& shell, int d, const double* f0, double s0, co
     w += a[d - 1][c] * alpha[c][d - 1];
     w_tree += std::fabs(a[d - 1][c]) * tau[c][d - 1];
   }
-  const double w_err = geometry::gamma_bound(m + d + 2) * w_tree * margin;
+  const double w_err = geometry::gamma_bound(geometry::laplace_roundings(d, 1)) * w_tree * margin;
   const double* g = shell.centre.data();
   double k = -w * s0, k_tree = std::fabs(w) * std::fabs(s0), k_err = 0.0;
   for (int c = 0; c < d; ++c) {

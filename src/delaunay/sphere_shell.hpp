@@ -68,11 +68,11 @@ struct SphereShell {
 // The lifted determinant det[r_1; ...; r_d; r_x] (rows relative to f0, as in
 // geometry::exact_lifted_form) as b . (x - g) + lift (|x - g|^2 - rho) + constant, computed in
 // floating point from the points' offsets, with bounds of each coefficient's distance to the
-// exact one: for d = 2 and 3. `rows` are the d points after f0, `s0` and `row_offsets` their
+// exact one: for d = 2 to 4. `rows` are the d points after f0, `s0` and `row_offsets` their
 // offsets (SphereShell::offset). False when a bound is not small against its terms (a
 // near-flat simplex, or points exactly on the fitted sphere, where b is 0) or a value is too
 // large; the caller also watches the floating-point flags (an underflow voids the bounds).
-constexpr int kFloatFormMaxDim = 3;
+constexpr int kFloatFormMaxDim = 4;
 struct FloatForm {
   double b[kFloatFormMaxDim], b_err[kFloatFormMaxDim];
   double lift, lift_err, constant, constant_err;
