@@ -148,8 +148,8 @@ class SearchKernel final : public FacetSearch::Kernel {
   void set_shell_form();
   // The form in floating point (sphere_shell.hpp, float_form; d = 2 to 4) with its
   // coefficients' error bounds; false where that declines or the arithmetic under- or
-  // overflowed: then set_shell_form asks GMP. 3D sphere, 32 000 points: time_search 0.545 ->
-  // 0.236 s; 4D sphere, 5 000 points: time_total 0.899 -> 0.390 s.
+  // overflowed: then set_shell_form asks GMP. 3D sphere, 32 000 points: time_search 0.519 ->
+  // 0.232 s; 4D sphere, 5 000 points: 0.905 -> 0.317 s.
   bool float_shell_form();
   int shell_sign(std::int32_t id) const;
   bool shell_prunes(std::int32_t node) const;
@@ -500,7 +500,8 @@ double SearchKernel<D>::shell_linear_low(std::int32_t node) const {
   // With the exact coefficients, sigma I = B . y + W S_x + K (shell_sign), y = x - g.
   // The box: each term's minimum over the node's box, summed in floating point: within
   // gamma(d + 3) a of its exact value on the truncated coefficients, and within 2.01 u a of
-  // the exact coefficients' (a: its absolute tree), which shell_node_gamma_ covers.
+  // the exact coefficients' (a: its absolute tree), which shell_node_gamma_ covers; plus the
+  // float form's coefficient errors at the box's largest |y_k|.
   const int d = dim();
   const double* lo = points_.tree.template lower<D>(node);
   const double* hi = points_.tree.template upper<D>(node);
@@ -961,7 +962,7 @@ bool SearchKernel<D>::prune(std::int32_t node) const {
 template <int D>
 bool SearchKernel<D>::cone_on_closed_side(std::int32_t node, double box_abs) const {
   // sigma O(x) = a . (x - f0) = a . y + a . (g - f0) with y = x - g = r e in the node's cone
-  // (shell_linear_low): a . e is at most |a|, or beta cos_lo + |a - beta m| sin_hi when a / |a|
+  // (cone_linear_low): a . e is at most |a|, or beta cos_lo + |a - beta m| sin_hi when a / |a|
   // lies outside the cone (beta = a . m). The rounding here is within shell_cone_gamma_ of
   // the absolute tree; the exact minors differ from a by at most prune's coefficient error,
   // which box_orient_gamma_ times the box's absolute tree covers (the box holds the points).

@@ -8,16 +8,22 @@
 // But the search's test, sigma I(p, x), is linear in (x, |x - g|^2) for any fixed g; with g the
 // input sphere's centre, a node's points have |x - g|^2 in a range as thin as their distance
 // from that sphere, and the minimum of the linear form over the node's box crossed with that
-// range proves, for most nodes, that none of their points beats the candidate
-// (facet_search.cpp, shell_prunes). In 2D only the nodes near the facet's and the candidate's
-// points remain; in 3D, those near one circle of the sphere.
+// range proves, for many nodes, that none of their points beats the candidate
+// (facet_search.cpp, shell_prunes). A node's box bounds the linear part loosely (the box of an
+// arc reaches across the candidate's sphere), so each node also has a cone from g that holds
+// its points, which bounds it over the points' cap; and each leaf lists its points by offset,
+// in blocks with cones of their own, so that a scan stops where the offsets prove the rest
+// outside (scan_shell_leaf). Only the points within rounding of the candidate's sphere are
+// then tested: about 30 per simplex on circles and spheres of any size.
 //
 // The form's terms must be small for the bounds to be tight, so it is computed around g and
-// rho exactly (geometry::exact_lifted_form, once per candidate), and each point's offset from
-// the sphere, |x - g|^2 - rho, once per point in double-double arithmetic: the points' tests
-// then resolve their sign to within rounding of those small terms, and GMP is left with the
-// true ties. (With the search's own form, whose terms are a hundred times the value, most
-// tests near the sphere went to GMP: 3D, 8 000 points, 640 per simplex.)
+// rho, once per candidate: in floating point from the points' offsets with a bound of each
+// coefficient's error (float_form, d = 2 to 4), else exactly (geometry::exact_lifted_form);
+// and each point's offset from the sphere, |x - g|^2 - rho, once per point in double-double
+// arithmetic: the points' tests then resolve their sign to within rounding of those small
+// terms, and GMP is left with the true ties. (With the search's own form, whose terms are a
+// hundred times the value, most tests near the sphere went to GMP: 3D, 8 000 points, 640 per
+// simplex.)
 //
 // The bounds are sound for any g, but useful only when most points lie near a sphere, so the
 // shell is built only then (a least-squares fit; see sphere_shell.cpp). It changes which nodes
