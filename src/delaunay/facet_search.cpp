@@ -158,6 +158,13 @@ class SearchKernel final : public FacetSearch::Kernel {
   double shell_linear_low(std::int32_t node) const;
   // The same over a cone (SphereShell::cone); -infinity if the cone is too wide.
   double cone_linear_low(const double* cone) const;
+  // The least of sign v . e over the unit vectors e of a cone of axis m (m . e >= cos_lo, as
+  // SphereShell::cone, cos_lo > 0), with norm >= |v|. sign v . e is convex along the axis and
+  // least (-|v|) at e = -sign v / |v|; when that lies outside the cone, the least is on its rim,
+  // at beta cos_lo - |sign v - beta m| sin (beta = sign v . m), lower still with sin_hi. Each
+  // quantity is within (2 d + 8) u |v| of its exact value and m's length adds (d + 2) u |v|; the
+  // case split has a margin far above beta's rounding error.
+  double least_on_cone(const double* v, double sign, double norm, const double* cone) const;
   // A leaf's points block by block (SphereShell::block_ids), each block's by offset from the
   // end whose offsets make the form smallest, up to the first point whose offset alone proves
   // the form positive over the block's cone: the points beyond it are outside the candidate's
@@ -525,24 +532,27 @@ double SearchKernel<D>::shell_linear_low(std::int32_t node) const {
 }
 
 template <int D>
-double SearchKernel<D>::cone_linear_low(const double* cone) const {
-  // y = r e with r_lo <= r <= r_hi and e a unit vector with m . e >= cos_lo. b . e is convex
-  // along the cone's axis, least (-|b|) at e = -b / |b|; when that lies outside the cone, the
-  // least is on its rim, at beta cos_lo - |b - beta m| sin, beta = b . m. With sin_hi for sin
-  // the value is lower still. Each quantity is within (2 d + 8) u |b| of its exact value, m's
-  // length and b's truncation add 2 (d + 3) u |b|, r and the sum 2 u: shell_cone_gamma_
-  // covers them over cone_a. The case split has a margin far above beta's rounding error.
+double SearchKernel<D>::least_on_cone(const double* v, double sign, double norm, const double* cone) const {
   const int d = dim();
   const double cos_lo = cone[d];
-  if (!(cos_lo > 0.0)) return -kInfinity;
   double beta = 0.0;
-  for (int k = 0; k < d; ++k) beta += shell_b_[static_cast<std::size_t>(k)] * cone[k];
+  for (int k = 0; k < d; ++k) beta += sign * v[k] * cone[k];
   double perp2 = 0.0;
   for (int k = 0; k < d; ++k) {
-    const double t = shell_b_[static_cast<std::size_t>(k)] - beta * cone[k];
+    const double t = sign * v[k] - beta * cone[k];
     perp2 += t * t;
   }
-  const double least = -beta < (cos_lo - 1e-6) * shell_b_norm_ ? beta * cos_lo - std::sqrt(perp2) * cone[d + 1] : -shell_b_norm_;
+  return -beta < (cos_lo - 1e-6) * norm ? beta * cos_lo - std::sqrt(perp2) * cone[d + 1] : -norm;
+}
+
+template <int D>
+double SearchKernel<D>::cone_linear_low(const double* cone) const {
+  // y = r e with r_lo <= r <= r_hi and e in the cone: b . y is at least r times least_on_cone,
+  // within shell_cone_gamma_ of cone_a (least_on_cone's errors, b's truncation 2 u |b|, r and
+  // the sum 2 u).
+  const int d = dim();
+  if (!(cone[d] > 0.0)) return -kInfinity;
+  const double least = least_on_cone(shell_b_.data(), 1.0, shell_b_norm_, cone);
   const double linear = least < 0.0 ? least * cone[d + 3] : least * cone[d + 2];
   const double cone_a = std::fabs(shell_constant_) + shell_b_norm_ * cone[d + 3];
   if (!(cone_a < geometry::kFilterOverflow)) return -kInfinity;
@@ -965,32 +975,24 @@ bool SearchKernel<D>::prune(std::int32_t node) const {
 
 template <int D>
 bool SearchKernel<D>::cone_on_closed_side(std::int32_t node, double box_abs) const {
-  // sigma O(x) = a . (x - f0) = a . y + a . (g - f0) with y = x - g = r e in the node's cone
-  // (cone_linear_low): a . e is at most |a|, or beta cos_lo + |a - beta m| sin_hi when a / |a|
-  // lies outside the cone (beta = a . m). The rounding here is within shell_cone_gamma_ of
-  // the absolute tree; the exact minors differ from a by at most prune's coefficient error,
-  // which box_orient_gamma_ times the box's absolute tree covers (the box holds the points).
+  // sigma O(x) = a . (x - f0) = a . y + a . (g - f0) with y = x - g = r e in the node's cone:
+  // a . e is at most -least_on_cone(-a). The rounding here is within shell_cone_gamma_ of the
+  // absolute tree; the exact minors differ from a by at most prune's coefficient error, which
+  // box_orient_gamma_ times the box's absolute tree covers (the box holds the points).
   const int d = dim();
   const double* cone = shell_->cone_of(node);
-  const double cos_lo = cone[d];
-  if (!(cos_lo > 0.0) || !facet_clean_) return false;
+  if (!(cone[d] > 0.0) || !facet_clean_) return false;
   const double* g = shell_->centre.data();
-  double beta = 0.0, norm2 = 0.0, offset = 0.0, offset_abs = 0.0;
+  double norm2 = 0.0, offset = 0.0, offset_abs = 0.0;
   for (int k = 0; k < d; ++k) {
     const double a = a_[static_cast<std::size_t>(k)];
     const double t = g[k] - f0_[k];
-    beta += a * cone[k];
     norm2 += a * a;
     offset += a * t;
     offset_abs += std::fabs(a) * std::fabs(t);
   }
-  double perp2 = 0.0;
-  for (int k = 0; k < d; ++k) {
-    const double t = a_[static_cast<std::size_t>(k)] - beta * cone[k];
-    perp2 += t * t;
-  }
   const double norm = std::sqrt(norm2) * (1 + geometry::gamma_bound(d + 2));
-  const double most = beta < (cos_lo - 1e-6) * norm ? beta * cos_lo + std::sqrt(perp2) * cone[d + 1] : norm;
+  const double most = -least_on_cone(a_.data(), -1.0, norm, cone);
   const double value = offset + (most > 0.0 ? most * cone[d + 3] : most * cone[d + 2]);
   const double bound = shell_cone_gamma_ * (offset_abs + norm * cone[d + 3]) + box_orient_gamma_ * box_abs + 0x1p-1000;
   return value < -bound;  // false on NaN
