@@ -159,14 +159,14 @@ TEST(SphereShell, BlocksCutTheLeavesAndListTheirPointsByOffset) {
     ASSERT_EQ(shell.block_start.back(), store.size);
     for (std::size_t leaf = 0; leaf < nodes.size(); ++leaf) {
       if (nodes[leaf].right >= 0) continue;
-      // The leaf's blocks: consecutive, of 1 to 8 points (the whole leaf in 2D), from its first
-      // point to its last.
+      // The leaf's blocks: consecutive, of 1 to 8 points in 3D, 32 from 4D (the whole leaf in
+      // 2D), from its first point to its last.
       auto block = static_cast<std::size_t>(shell.first_block[leaf]);
       ASSERT_EQ(shell.block_start[block], nodes[leaf].begin);
       for (; shell.block_start[block] < nodes[leaf].end; ++block) {
         const std::int32_t begin = shell.block_start[block], end = shell.block_start[block + 1];
         ASSERT_GE(end - begin, 1);
-        if (d > 2) ASSERT_LE(end - begin, 8);
+        if (d > 2) ASSERT_LE(end - begin, d == 3 ? 8 : 32);
         std::vector<std::int32_t> ids(shell.block_ids.begin() + begin, shell.block_ids.begin() + end);
         for (std::int32_t i = begin; i < end; ++i) {
           const auto at = static_cast<std::size_t>(i);
@@ -231,9 +231,9 @@ TEST(SphereShell, FloatFormIsWithinItsBoundsOfTheExactForm) {
   // The exact coefficients from the lifted determinant's cofactors along x's row (C_c for the
   // spatial columns, C_L for the lift), rewritten around g: B_c = C_c - 2 C_L y0_c, W = C_L,
   // K = C_L (rho + |y0|^2) - C . y0 with y0 = f0 - g. Each float coefficient must be within
-  // its bound of them; and most simplices must get a float form at all (2D to 4D).
+  // its bound of them; and most simplices must get a float form at all (2D to 5D).
   drange::test::TestRandom random(41);
-  for (int d : {2, 3, 4}) {
+  for (int d : {2, 3, 4, 5}) {
     for (double noise : {0.0, 1e-12, 1e-9}) {
       const auto store = store_of(sphere(3000, d, 42 + static_cast<std::uint64_t>(d), 1.5, 0.25, noise));
       const drange::engine::SphereShell& shell = store.shell;

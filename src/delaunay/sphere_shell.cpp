@@ -205,8 +205,11 @@ void cut_blocks(std::int32_t begin, std::int32_t end, std::int32_t size, std::ve
 
 // The blocks' size: on a circle a leaf's cone bounds its points well enough (with blocks of
 // 8, the circle of 80 000 points took 0.213 s in the search instead of 0.201), on a sphere
-// blocks of 8 test a fifth of the points (3D, 32 000 points: 0.604 -> 0.536 s).
-std::int32_t block_size(int dim) { return dim == 2 ? std::numeric_limits<std::int32_t>::max() : spatial::KdTree::kOrderLeafSize; }
+// blocks of 8 test a fifth of the points (3D, 32 000 points: 0.604 -> 0.536 s; 16: 0.236 ->
+// 0.232, within the noise). From 4D, with leaves of 256 points, a cone per 8 points costs more
+// than it saves: 4D sphere, 5 000 points, min of 5, 8 / 16 / 32 / 64 / whole leaf: 0.335 /
+// 0.300 / 0.288 / 0.342 / 0.564 s; 5D, 1 500 points, 8 / 32: 3.02 / 2.95 s.
+std::int32_t block_size(int dim) { return dim == 2 ? std::numeric_limits<std::int32_t>::max() : dim == 3 ? spatial::KdTree::kOrderLeafSize : 32; }
 
 // The nodes' cones, the blocks and their cones, and the blocks' points by offset.
 void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spatial::KdTree::Node>& nodes,
@@ -272,25 +275,26 @@ void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spati
   }
 }
 
-// The determinant of the k x k submatrix of `a` on `rows` and `columns` (k <= 3) by Laplace
-// expansion along its first row, and the same expansion on absolute values (its error bound's
-// tree: within gamma(laplace_roundings(k, 1)) of it when each entry carries one rounding).
-void minor_of(const double (*a)[kFloatFormMaxDim], const int* rows, const int* columns, int k, double& value, double& tree) {
-  if (k == 1) {
+// The determinant of the K x K submatrix of `a` on `rows` and `columns` by Laplace expansion
+// along its first row, and the same expansion on absolute values (its error bound's tree:
+// within gamma(laplace_roundings(K, 1)) of it when each entry carries one rounding).
+template <int N, int K>
+void minor_of(const double (&a)[N][N], const int* rows, const int* columns, double& value, double& tree) {
+  if constexpr (K == 1) {
     value = a[rows[0]][columns[0]];
     tree = std::fabs(value);
-    return;
-  }
-  value = tree = 0.0;
-  for (int j = 0; j < k; ++j) {
-    int rest[kFloatFormMaxDim];
-    for (int t = 0, o = 0; t < k; ++t)
-      if (t != j) rest[o++] = columns[t];
-    double v = 0.0, t = 0.0;
-    minor_of(a, rows + 1, rest, k - 1, v, t);
-    const double entry = a[rows[0]][columns[j]];
-    value += (j % 2 ? -entry : entry) * v;
-    tree += std::fabs(entry) * t;
+  } else {
+    value = tree = 0.0;
+    for (int j = 0; j < K; ++j) {
+      int rest[K - 1];
+      for (int t = 0, o = 0; t < K; ++t)
+        if (t != j) rest[o++] = columns[t];
+      double v = 0.0, t = 0.0;
+      minor_of<N, K - 1>(a, rows + 1, rest, v, t);
+      const double entry = a[rows[0]][columns[j]];
+      value += (j % 2 ? -entry : entry) * v;
+      tree += std::fabs(entry) * t;
+    }
   }
 }
 
@@ -351,8 +355,13 @@ SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, cons
   return shell;
 }
 
-bool float_form(const SphereShell& shell, int d, const double* f0, double s0, const double* const* rows, const double* row_offsets,
-                FloatForm& form) {
+namespace {
+// float_form for d = N: loops of fixed length (a run-time d made the 4D form a quarter slower
+// once 5D was added: 4D sphere, 5 000 points, time_search 0.284 -> 0.352 s).
+template <int N>
+bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, const double* const* rows, const double* row_offsets,
+                      FloatForm& form) {
+  constexpr int d = N;
   // With S_x = |x - g|^2 - rho, |x - f0|^2 = (S_x - S_0) - 2 (f0 - g) . (x - f0): the lift
   // column less a combination of the spatial ones, so the lifted determinant is
   //   det[p_i - f0, S_i - S_0 (i = 1..d); x - f0, S_x - S_0].
@@ -371,10 +380,9 @@ bool float_form(const SphereShell& shell, int d, const double* f0, double s0, co
   //   A's Laplace expansion along that row);
   //   K: the sum's roundings, the b and y0 errors, W's error and the offset S_0's error.
   // Each bound is evaluated with a margin for its own roundings.
-  if (d < 2 || d > kFloatFormMaxDim) return false;
   constexpr double u = geometry::kUnitRoundoff;
   const double eta = shell.eta;
-  double a[kFloatFormMaxDim][kFloatFormMaxDim], sh[kFloatFormMaxDim], e[kFloatFormMaxDim];
+  double a[N][N], sh[N], e[N];
   for (int i = 0; i < d; ++i) {
     const double* p = rows[i];
     for (int c = 0; c < d; ++c) a[i][c] = p[c] - f0[c];
@@ -382,28 +390,28 @@ bool float_form(const SphereShell& shell, int d, const double* f0, double s0, co
     sh[i] = si - s0;
     e[i] = (1.01 * u * std::fabs(sh[i]) + u * (std::fabs(si) + std::fabs(s0)) + 2 * eta) * (1 + 8 * u);
   }
-  double alpha[kFloatFormMaxDim][kFloatFormMaxDim], tau[kFloatFormMaxDim][kFloatFormMaxDim];  // adj(A)[c][i] = cofactor (i, c)
-  if (d == 2) {
+  double alpha[N][N], tau[N][N];  // adj(A)[c][i] = cofactor (i, c)
+  if constexpr (N == 2) {
     alpha[0][0] = a[1][1], alpha[0][1] = -a[0][1], alpha[1][0] = -a[1][0], alpha[1][1] = a[0][0];
     for (int c = 0; c < 2; ++c)
       for (int i = 0; i < 2; ++i) tau[c][i] = std::fabs(alpha[c][i]);
-  } else if (d == 3) {  // the cofactors by cyclic indices (the sign comes with them)
+  } else if constexpr (N == 3) {  // the cofactors by cyclic indices (the sign comes with them)
     for (int c = 0; c < 3; ++c)
       for (int i = 0; i < 3; ++i) {
         const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
         alpha[c][i] = a[i1][c1] * a[i2][c2] - a[i1][c2] * a[i2][c1];
         tau[c][i] = std::fabs(a[i1][c1]) * std::fabs(a[i2][c2]) + std::fabs(a[i1][c2]) * std::fabs(a[i2][c1]);
       }
-  } else {  // d = 4: the cofactors as 3 x 3 minors
+  } else {  // d = 4, 5: the cofactors as (d - 1) x (d - 1) minors
     for (int c = 0; c < d; ++c)
       for (int i = 0; i < d; ++i) {
-        int rows_left[kFloatFormMaxDim], columns_left[kFloatFormMaxDim];
+        int rows_left[N - 1], columns_left[N - 1];
         for (int t = 0, r = 0, k = 0; t < d; ++t) {
           if (t != i) rows_left[r++] = t;
           if (t != c) columns_left[k++] = t;
         }
         double value = 0.0, tree = 0.0;
-        minor_of(a, rows_left, columns_left, d - 1, value, tree);
+        minor_of<N, N - 1>(a, rows_left, columns_left, value, tree);
         alpha[c][i] = (i + c) % 2 ? -value : value;
         tau[c][i] = tree;
       }
@@ -450,6 +458,18 @@ bool float_form(const SphereShell& shell, int d, const double* f0, double s0, co
   form.constant_err = k_err;
   form.b_err_sum = b_err_sum;
   return true;
+}
+}  // namespace
+
+bool float_form(const SphereShell& shell, int d, const double* f0, double s0, const double* const* rows, const double* row_offsets,
+                FloatForm& form) {
+  switch (d) {
+    case 2: return float_form_fixed<2>(shell, f0, s0, rows, row_offsets, form);
+    case 3: return float_form_fixed<3>(shell, f0, s0, rows, row_offsets, form);
+    case 4: return float_form_fixed<4>(shell, f0, s0, rows, row_offsets, form);
+    case 5: return float_form_fixed<5>(shell, f0, s0, rows, row_offsets, form);
+    default: return false;
+  }
 }
 
 }  // namespace drange::engine
