@@ -52,13 +52,13 @@ struct SphereShell {
   // (at least sqrt(1 - cos_lo^2), with a margin for m's rounding), and r_lo <= |y| <= r_hi.
   // cos_lo is -2 where no such cone is narrower than a half-space (or a point is at g). On a
   // sphere the node's points lie on an arc or a cap, which its box bounds loosely: the cone
-  // bounds the form's linear term over them tightly (facet_search.cpp, shell_cone_low).
+  // bounds the form's linear term over them tightly (facet_search.cpp, cone_linear_low).
   std::vector<double> cone;
   // Each leaf cut into blocks the way the build orders its points (halving down to 8 points
-  // in 3D, 32 from 4D, the whole leaf in 2D: near points; sphere_shell.cpp, block_size): block b is [block_start[b], block_start[b +
-  // 1]), a leaf's blocks start at first_block[leaf] (-1 for inner nodes); each block's cone
-  // (as `cone`), and its point ids by increasing offset (block_ids over the block's
-  // positions) with those offsets. The leaf scan tests, block by block, only the points whose
+  // in 3D, 32 from 4D, the whole leaf in 2D: near points; sphere_shell.cpp, block_size):
+  // block b is [block_start[b], block_start[b + 1]), a leaf's blocks start at
+  // first_block[leaf] (-1 for inner nodes); each block's cone (as `cone`), and its point ids
+  // by increasing offset (block_ids over the block's positions) with those offsets. The leaf scan tests, block by block, only the points whose
   // offset can still beat the candidate (facet_search.cpp, scan_shell_leaf).
   std::vector<std::int32_t> block_start, first_block;
   std::vector<double> block_cone;
