@@ -136,7 +136,8 @@ struct Triangulation {
 // coordinates, so any permutation of the input gives the same simplices.
 // Throws InputError (NaN/infinite coordinate, a dimension outside 2..11, 2^31 points or more) or DegenerateInputError
 // (fewer than d+1 distinct points, or all points in one hyperplane); UsageError for a negative
-// Options::threads.
+// Options::threads; InternalError when one of the engine's own invariants fails (a bug, such as
+// more simplices than n points in E^d can have), rather than return a wrong triangulation.
 Triangulation delaunay(PointsView points, const Options& options = {});
 
 }  // namespace drange

@@ -35,4 +35,12 @@ class UsageError : public Error {
   using Error::Error;
 };
 
+// An invariant of the engine failed: a bug in drange, never a property of the input. The
+// engine stops at once rather than return, or keep computing, a wrong result (for example,
+// more simplices than any triangulation of the points can have).
+class InternalError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace drange

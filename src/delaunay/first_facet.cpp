@@ -8,7 +8,6 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
-#include <stdexcept>
 #include <string>
 
 #include "drange/errors.hpp"
@@ -192,7 +191,7 @@ std::int32_t Wrapper::gift_wrap_step(const Ids& ids, const Axes& axes, const Ids
   std::int32_t best = -1;
   for (const StepScan& chunk : chunks) {
     if (chunk.side != 0 && side != 0 && chunk.side != side)
-      throw std::logic_error("gift wrapping: the previous hyperplane is not supporting");
+      throw InternalError("gift wrapping: the previous hyperplane is not supporting");
     if (side == 0) side = chunk.side;
     if (chunk.on_hyperplane >= 0) return chunk.on_hyperplane;
     if (chunk.best < 0) continue;
@@ -247,7 +246,7 @@ Wrapper::StepScan Wrapper::scan_step(const std::int32_t* first, const std::int32
       continue;
     }
     if (scan.side == 0) scan.side = o;
-    if (o != scan.side) throw std::logic_error("gift wrapping: the previous hyperplane is not supporting");
+    if (o != scan.side) throw InternalError("gift wrapping: the previous hyperplane is not supporting");
     if (scan.best < 0) {
       scan.best = x;
       continue;
@@ -295,7 +294,7 @@ Wrapper::SupportScan Wrapper::scan_support(const std::int32_t* first, const std:
       scan.side = o;
       scan.off = x;
     }
-    if (o != scan.side) throw std::logic_error("gift wrapping: the hyperplane found is not supporting");
+    if (o != scan.side) throw InternalError("gift wrapping: the hyperplane found is not supporting");
   }
   return scan;
 }
@@ -321,7 +320,7 @@ Wrapper::Support Wrapper::supporting_facet(const Ids& ids, const Axes& axes) {
       side = chunk.side;
       support.off = chunk.off;
     }
-    if (chunk.side != side) throw std::logic_error("gift wrapping: the hyperplane found is not supporting");
+    if (chunk.side != side) throw InternalError("gift wrapping: the hyperplane found is not supporting");
   }
   if (side == 0) throw_flat(points_);
   Ids rows(found.begin() + 1, found.end());
@@ -339,7 +338,7 @@ Wrapper::Support Wrapper::supporting_facet(const Ids& ids, const Axes& axes) {
     support.facet = simplex_in_flat(on, sub);
     return support;
   }
-  throw std::logic_error("gift wrapping: the hyperplane found has no normal");
+  throw InternalError("gift wrapping: the hyperplane found has no normal");
 }
 
 Ids Wrapper::simplex_in_flat(const Ids& ids, const Axes& axes) {
@@ -379,7 +378,7 @@ Ids Wrapper::simplex_in_flat(const Ids& ids, const Axes& axes) {
     ranks[static_cast<std::size_t>(k + 1)] = points_.rank[static_cast<std::size_t>(x)];
     if (sigma * geometry::lifted_sign_perturbed(frame, lifted.data(), ranks.data()) < 0) apex = x;
   }
-  if (apex < 0) throw std::logic_error("first facet: a flat without a point off its facet");
+  if (apex < 0) throw InternalError("first facet: a flat without a point off its facet");
   simplex.push_back(apex);
   return simplex;
 }
@@ -401,7 +400,7 @@ FirstFacet find_first_facet(const PointStore& points, Team& team) {
   rows.push_back(points.point(support.off));
   const geometry::Frame frame{points.dim, points.dim, nullptr, points.point(first.ids[0])};
   first.sigma = geometry::orientation(frame, rows.data());
-  if (first.sigma == 0) throw std::logic_error("first facet: the interior point is on the facet");
+  if (first.sigma == 0) throw InternalError("first facet: the interior point is on the facet");
   return first;
 }
 

@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -17,6 +17,7 @@
 #include "delaunay/first_facet.hpp"
 #include "delaunay/simplex_estimate.hpp"
 #include "drange/delaunay.hpp"
+#include "drange/errors.hpp"
 
 namespace drange::engine {
 
@@ -53,7 +54,9 @@ class Frontier {
         stats_(result.stats),
         table_(d),
         queue_(std::move(queue)),
-        progress_(progress) {
+        progress_(progress),
+        points_(points),
+        max_simplices_(engine::simplex_upper_bound(d, static_cast<std::size_t>(points))) {
     // Room for the simplices up front (simplex_estimate.hpp): growing by doubling copies them
     // all once more, on the calling thread, and sets the peak memory in high dimensions.
     const auto width = static_cast<std::size_t>(width_);
@@ -109,7 +112,7 @@ class Frontier {
   bool take_uncounted(const std::int32_t* ids, const FacetInfo& info, bool closed) {
     if (closed) return false;
     if (info.owner.simplex < 0 || table_.remove(ids, info.hash)) return true;
-    if (mark_closures_) throw std::logic_error("delaunay: a queued facet is not open");
+    if (mark_closures_) throw InternalError("delaunay: a queued facet is not open");
     return false;  // closed while it waited
   }
   void count_open_facets(std::size_t taken) {
@@ -143,6 +146,10 @@ class Frontier {
   ProgressCountdown progress_;
   std::vector<std::uint64_t> closed_after_pop_;
   bool mark_closures_ = Queue::kMarksCheaply;
+  // More simplices than this for `points_` points: a search returned a wrong apex
+  // (simplex_estimate.hpp).
+  std::int32_t points_;
+  std::size_t max_simplices_;
 };
 
 template <class Queue>
@@ -156,6 +163,10 @@ void Frontier<Queue>::close(const std::int32_t* ids, const FacetInfo& info, std:
   // The new simplex: the facet's vertices, then the apex, whose orientation is sigma; one
   // transposition of the first two vertices makes it positive.
   const auto s = static_cast<std::int32_t>(simplices_.size() / width);
+  if (static_cast<std::size_t>(s) >= max_simplices_)
+    throw InternalError("delaunay: more than " + std::to_string(max_simplices_) + " simplices, the most that " +
+                        std::to_string(points_) + " points in " + std::to_string(d_) +
+                        " dimensions can have (a search returned a wrong apex)");
   const std::size_t base = simplices_.size();
   const bool swapped = info.sigma < 0;
   for (int i = 0; i < d_; ++i) simplices_.push_back(ids[i]);

@@ -12,7 +12,6 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
-#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -25,6 +24,7 @@
 #include "delaunay/seed_memory.hpp"
 #include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
+#include "drange/errors.hpp"
 #include "geometry/predicates.hpp"
 
 namespace drange::engine {
@@ -235,7 +235,7 @@ class SearchPipeline {
       if (result.outcome == Outcome::searched) ++totals.wasted;
       return;
     }
-    if (result.outcome != Outcome::searched) throw std::logic_error("delaunay: a facet predicted closed is open");
+    if (result.outcome != Outcome::searched) throw InternalError("delaunay: a facet predicted closed is open");
     totals.add(engine::SearchCounters{result.calls, result.points_tested, result.candidates}, result.exact);
     if (result.apex >= 0) frontier_.prefetch_derived(derived(s));
     frontier_.close(ids(s), info_[s], result.apex, derived(s));

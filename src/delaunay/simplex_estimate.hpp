@@ -1,4 +1,5 @@
-// delaunay/simplex_estimate.hpp: how many simplices to make room for before the search.
+// delaunay/simplex_estimate.hpp: how many simplices to make room for before the search, and
+// how many there can be at most.
 //
 // The simplices and their neighbours are appended to two vectors. Growing a vector by doubling
 // copies it once more and, for the moment of the copy, holds the old and the new block: the
@@ -11,8 +12,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 
 namespace drange::engine {
 
@@ -35,6 +38,31 @@ inline std::size_t reservable_simplices(std::size_t simplices, std::size_t ints_
   if (pages <= 0 || page_size <= 0) return 0;
   const std::size_t budget = static_cast<std::size_t>(pages) / 4 * static_cast<std::size_t>(page_size);
   return std::min(simplices, budget / (ints_per_simplex * arrays * sizeof(int)));
+}
+
+// The most simplices a Delaunay triangulation of n distinct points in E^d can have: it is the
+// lower hull of the points lifted to E^(d+1), perturbed symbolically into general position, so a
+// simplicial (d+1)-polytope with at most n vertices, and by McMullen's upper bound theorem it
+// has at most as many facets as the cyclic polytope C(n, d+1):
+//   d + 1 = 2m even:  n / (n - m) * C(n - m, m);     d + 1 = 2m + 1 odd:  2 C(n - m - 1, m)
+// (2D: 2n - 4; 3D: n (n - 3) / 2). The driver stops with an InternalError past it (frontier.hpp):
+// a search that returns a wrong apex makes simplices overlap, and their facets, never matched,
+// would keep the search going while memory lasts. Computed in floating point and rounded up
+// generously (the bound only has to stay above the true count); saturates at SIZE_MAX.
+inline std::size_t simplex_upper_bound(int d, std::size_t n) {
+  const int m = (d + 1) / 2;
+  const double points = static_cast<double>(n);
+  if (n < static_cast<std::size_t>(d) + 2) return 1;  // d + 1 points at most: one simplex
+  // C(top, m) as a product of m ratios, each exact to a relative 2^-52 or so.
+  const auto binomial = [m](double top) {
+    double c = 1.0;
+    for (int i = 1; i <= m; ++i) c = c * (top - m + i) / i;
+    return c;
+  };
+  const double facets = (d + 1) % 2 == 0 ? points / (points - m) * binomial(points - m) : 2 * binomial(points - m - 1);
+  const double bound = std::ceil(facets * (1 + 1e-9)) + 1;
+  if (!(bound < 0x1p63)) return std::numeric_limits<std::size_t>::max();
+  return static_cast<std::size_t>(bound);
 }
 
 }  // namespace drange::engine

@@ -20,7 +20,6 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -190,7 +189,7 @@ void search(Frontier<Queue>& frontier, const engine::FirstFacet& first, const en
     SearchPipeline<Queue> pipeline(points, options, team.threads(), frontier, lookahead);
     pipeline.run(team, totals);
   }
-  if (!frontier.table_empty()) throw std::logic_error("delaunay: open facets left after the search");
+  if (!frontier.table_empty()) throw InternalError("delaunay: open facets left after the search");
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 #include <array>
 #include <memory>
 #include <mutex>
-#include <stdexcept>
+
+#include "drange/errors.hpp"
 
 namespace drange::geometry {
 
@@ -26,7 +27,7 @@ SubsetTable::SubsetTable(int columns)
 }
 
 const SubsetTable& SubsetTable::get(int columns) {
-  if (columns < 0 || columns > kMaxColumns) throw std::logic_error("SubsetTable: too many columns");
+  if (columns < 0 || columns > kMaxColumns) throw InternalError("SubsetTable: too many columns");
   // Each column count's table is built on its first use, thread-safely: a 2D run needs the
   // 3-column table (a few hundred bytes), not all of them (241 kB, most of it the 12-column
   // one: a quarter of drange's own heap on 20 000 points).

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "drange/errors.hpp"
 #include "geometry/error_bound.hpp"
 #include "geometry/exact.hpp"
 #include "geometry/exact_matrix.hpp"
@@ -244,7 +245,7 @@ int lifted_tie_sign(const Frame& f, const double* const* points, const std::int6
     }
   }
   // Only reachable when the k+2 points do not span the k-flat: a caller's bug.
-  throw std::logic_error("lifted_sign_perturbed: the points do not span their flat");
+  throw InternalError("lifted_sign_perturbed: the points do not span their flat");
 }
 
 int orientation(const Frame& f, const double* const* points) {
