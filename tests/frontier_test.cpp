@@ -4,9 +4,10 @@
 // InternalError instead of searching while memory lasts.
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
