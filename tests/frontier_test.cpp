@@ -59,7 +59,7 @@ TEST(SimplexUpperBound, IsTheCyclicPolytopesFacetCountRoundedUpSlightly) {
 // Points on the moment curve (t, t^2, t^3) in 3D have nearly the most tetrahedra that n points
 // can have: (n - 2)(n - 3) / 2 against the bound's n (n - 3) / 2. The guard must not trip there,
 // and a bound smaller by n would.
-TEST(SimplexUpperBound, HoldsOnTheMomentCurveWhereItIsReached) {
+TEST(SimplexUpperBound, HoldsOnTheMomentCurveWhereItIsNearlyReached) {
   for (int n : {8, 13, 21}) {
     std::vector<double> coords;
     for (int i = 0; i < n; ++i) {

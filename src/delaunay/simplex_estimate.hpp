@@ -50,9 +50,9 @@ inline std::size_t reservable_simplices(std::size_t simplices, std::size_t ints_
 // would keep the search going while memory lasts. Computed in floating point and rounded up
 // generously (the bound only has to stay above the true count); saturates at SIZE_MAX.
 inline std::size_t simplex_upper_bound(int d, std::size_t n) {
+  if (n < static_cast<std::size_t>(d) + 2) return 1;  // d + 1 points at most: one simplex
   const int m = (d + 1) / 2;
   const double points = static_cast<double>(n);
-  if (n < static_cast<std::size_t>(d) + 2) return 1;  // d + 1 points at most: one simplex
   // C(top, m) as a product of m ratios, each exact to a relative 2^-52 or so.
   const auto binomial = [m](double top) {
     double c = 1.0;
