@@ -10,8 +10,11 @@
 // Qhull's format; the message for its first data row says so. Conversely a lone integer on
 // line 1 followed by wider rows was most likely meant as a header; that message says so too.
 #include <algorithm>
+#include <charconv>
 #include <climits>
+#include <cmath>
 #include <cstdint>
+#include <system_error>
 #include <istream>
 #include <string>
 #include <string_view>
@@ -139,6 +142,39 @@ void parse_point_row(const std::string& name, const ContentLine& line, const std
   }
 }
 
+// The common row, read in one pass without splitting it first: `dim` finite numbers with
+// separators as split_fields has them, and nothing after them. Appends them and returns true;
+// returns false with `coords` unchanged for anything else (a leading '+', NaN, an empty field,
+// a wrong count, a value out of range), which parse_point_row then reads or reports. Where
+// this accepts a row, each field is what from_chars consumed up to a separator, the very
+// characters parse_double would be given, so the values are the same.
+// (2D, 50 000 points: reading took 1 184 instructions per point with the split, of which
+// from_chars 444; callgrind.)
+bool append_plain_row(std::string_view line, int dim, std::vector<double>& coords) {
+  const char* p = line.data();
+  const char* const end = p + line.size();
+  const std::size_t at = coords.size();
+  coords.resize(at + static_cast<std::size_t>(dim));
+  double* out = coords.data() + at;
+  for (int k = 0; k < dim; ++k) {
+    while (p < end && io::is_blank(*p)) ++p;
+    if (k > 0 && p < end && *p == ',') {
+      ++p;
+      while (p < end && io::is_blank(*p)) ++p;
+    }
+    const auto result = std::from_chars(p, end, out[k]);
+    const bool separated = result.ptr == end || io::is_blank(*result.ptr) || *result.ptr == ',';
+    if (result.ec != std::errc() || result.ptr == p || !separated || !std::isfinite(out[k])) {
+      coords.resize(at);
+      return false;
+    }
+    p = result.ptr;
+  }
+  while (p < end && io::is_blank(*p)) ++p;
+  if (p != end) coords.resize(at);
+  return p == end;
+}
+
 // Room for the coordinates without regrowing. The lines actually present cap the estimate,
 // so that a header claiming 10^15 points cannot make us allocate for them.
 void reserve_coordinates(std::vector<double>& coords, std::size_t points_claimed, std::size_t dim,
@@ -159,8 +195,10 @@ PointCloud parse_qhull(io::LineScanner& scanner, const Layout& layout, const std
   ContentLine line;
   std::size_t found = 0;
   while (scanner.next(line.text, line.number)) {
-    io::split_fields(line.text, fields);
-    parse_point_row(name, line, fields, layout.dim, found == 0 ? first_row_hint : std::string(), cloud.coords);
+    if (!append_plain_row(line.text, layout.dim, cloud.coords)) {
+      io::split_fields(line.text, fields);
+      parse_point_row(name, line, fields, layout.dim, found == 0 ? first_row_hint : std::string(), cloud.coords);
+    }
     ++found;
   }
   if (found != layout.count) {
@@ -186,6 +224,7 @@ PointCloud parse_rows(io::LineScanner& scanner, const std::string& name) {
   bool first = true;
   std::string hint;
   while (scanner.next(line.text, line.number)) {
+    if (cloud.dim > 0 && append_plain_row(line.text, cloud.dim, cloud.coords)) continue;
     io::split_fields(line.text, fields);
     if (first) {
       first = false;

