@@ -86,10 +86,36 @@ class MinorTable {
     }
   }
 
+  // set_row for a table of exactly C columns, with the Laplace terms laid out at compile time
+  // (the kd-tree search's facets, d = 2 to 8: C = d + 1): no term table to read, the cofactor
+  // signs known, and each minor's address a constant. The same products are summed in the same
+  // order as by set_row, so every minor is the same double. (Callgrind, 5D 3 000 points: the
+  // generic loop took 13.4 instructions per term, and a sixth of the run.)
+  template <int C>
+  void set_row_fixed(int r, const double* row) {
+    double x[C], x_abs[C];  // locals: the stores to value_ below cannot change them
+    for (int j = 0; j < C; ++j) {
+      x[j] = row[j];
+      x_abs[j] = std::fabs(row[j]);
+    }
+    expand_size<C, 1>(r + 1, x, x_abs);
+  }
+
   double minor(std::uint32_t mask) const { return value_[mask]; }
   double abs_minor(std::uint32_t mask) const { return abs_[mask]; }
 
  private:
+  template <int C, int S>
+  void expand_size(int size, const double* x, const double* x_abs) {
+    if constexpr (S <= C) {
+      if (size == S) expand_fixed<C, S>(x, x_abs);
+      else expand_size<C, S + 1>(size, x, x_abs);
+    }
+  }
+  // Every minor of S columns from those of S - 1, as set_row (SubsetTable's order and signs).
+  template <int C, int S>
+  void expand_fixed(const double* x, const double* x_abs);
+
   // Points value_ and abs_ at the storage; only the empty minor needs a value before set_row.
   void attach(int columns) {
     const std::size_t size = std::size_t{1} << columns;
@@ -116,5 +142,69 @@ class MinorTable {
   double* abs_ = nullptr;
   double inline_[2 << kInlineColumns];
 };
+
+namespace minors_detail {
+
+constexpr int popcount(std::uint32_t x) {
+  int n = 0;
+  for (; x != 0; x &= x - 1) ++n;
+  return n;
+}
+constexpr int binomial(int n, int k) {
+  long long b = 1;
+  for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
+  return static_cast<int>(b);
+}
+
+// The column subsets of size S of C columns in increasing mask order (SubsetTable::of_size's),
+// each with its Laplace expansion along the last row: member column p in increasing order, and
+// the subset less that column (SubsetTable::terms_of_size).
+template <int C, int S>
+struct FixedTerms {
+  static constexpr int kSubsets = binomial(C, S);
+  std::uint32_t mask[kSubsets];
+  std::uint32_t sub[kSubsets][S];
+  int column[kSubsets][S];
+};
+
+template <int C, int S>
+constexpr FixedTerms<C, S> make_fixed_terms() {
+  FixedTerms<C, S> terms{};
+  int i = 0;
+  for (std::uint32_t mask = 0; mask < (std::uint32_t{1} << C); ++mask) {
+    if (popcount(mask) != S) continue;
+    terms.mask[i] = mask;
+    int p = 0;
+    for (int j = 0; j < C; ++j) {
+      if (((mask >> j) & 1u) == 0) continue;
+      terms.sub[i][p] = mask & ~(std::uint32_t{1} << j);
+      terms.column[i][p] = j;
+      ++p;
+    }
+    ++i;
+  }
+  return terms;
+}
+
+}  // namespace minors_detail
+
+template <int C, int S>
+void MinorTable::expand_fixed(const double* x, const double* x_abs) {
+  static constexpr minors_detail::FixedTerms<C, S> kTerms = minors_detail::make_fixed_terms<C, S>();
+#pragma GCC unroll 128
+  for (int i = 0; i < kTerms.kSubsets; ++i) {
+    double v = 0.0, a = 0.0;
+#pragma GCC unroll 16
+    for (int p = 0; p < S; ++p) {
+      const double term = x[kTerms.column[i][p]] * value_[kTerms.sub[i][p]];
+      // The cofactor's sign (-1)^(S - 1 + p): v - term is v + (-1 * term) exactly.
+      if ((S - 1 + p) & 1) v -= term;
+      else v += term;
+      a += x_abs[kTerms.column[i][p]] * abs_[kTerms.sub[i][p]];
+    }
+    value_[kTerms.mask[i]] = v;
+    abs_[kTerms.mask[i]] = a;
+  }
+}
 
 }  // namespace drange::geometry
