@@ -343,10 +343,12 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
   // I(p, x) = det[...; r_p; r_x]: Laplace along the last row over all d+1 columns; its
   // d-minors (all but column j), by Laplace along p's row (row d - 1) over the (d-1)-minors.
   const std::uint32_t all = bit(d + 1) - 1;
+#pragma GCC unroll 12
   for (int j = 0; j <= d; ++j) {
     const double sign = sigma * (((d + j) & 1) ? -1.0 : 1.0);
     const std::uint32_t mask = all & ~bit(j);
     int position = 0;  // of column c within mask: the cofactor sign (-1)^(d - 1 + position)
+#pragma GCC unroll 12
     for (int c = 0; c <= d; ++c) {
       if (c == j) continue;
       const std::uint32_t sub = mask & ~bit(c);
@@ -376,9 +378,12 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
   rows_[static_cast<std::size_t>(d - 1)] = p;
   const geometry::FloatingPointWatch watch;
   ranks_[static_cast<std::size_t>(d)] = points_.rank[static_cast<std::size_t>(id)];
-  // row_ holds r_p (consider() computed it).
+  // row_ holds r_p (consider() computed it). Unrolled for fixed d, the test c == j folds
+  // away (the loops as written kept it: 5D, a sixth of this function's instructions).
+#pragma GCC unroll 12
   for (int j = 0; j <= d; ++j) {
     double v = 0.0, a = 0.0;
+#pragma GCC unroll 12
     for (int c = 0; c <= d; ++c) {
       if (c == j) continue;
       v += k_[static_cast<std::size_t>(j)][static_cast<std::size_t>(c)] * row_[static_cast<std::size_t>(c)];
