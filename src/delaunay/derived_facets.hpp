@@ -25,10 +25,19 @@ inline void derive_in(const std::int32_t* facet, int sigma, std::int32_t apex, i
 // Not inlined: inlined into the driver's serial loop (as a header function it was), the 3D 1M
 // search was 8% slower (6.10 -> 6.64 s, best of 3, one thread); as a call, as before.
 [[gnu::noinline]] inline void derive_other_facets(const std::int32_t* facet, int sigma, std::int32_t apex, int d, std::int32_t* block) {
-  // The common dimensions with d a constant: the compiler unrolls the short loops.
-  if (d == 2) derive_in(facet, sigma, apex, 2, block);
-  else if (d == 3) derive_in(facet, sigma, apex, 3, block);
-  else derive_in(facet, sigma, apex, d, block);
+  // With d a constant (the search kernels' dimensions) the compiler unrolls the short loops.
+  // From 4D too: callgrind, 4D 20 000 points, this function with its callees 329M -> 183M
+  // instructions (all of the run -2.5%; 5D 3 000 points -2.5%).
+  switch (d) {
+    case 2: derive_in(facet, sigma, apex, 2, block); return;
+    case 3: derive_in(facet, sigma, apex, 3, block); return;
+    case 4: derive_in(facet, sigma, apex, 4, block); return;
+    case 5: derive_in(facet, sigma, apex, 5, block); return;
+    case 6: derive_in(facet, sigma, apex, 6, block); return;
+    case 7: derive_in(facet, sigma, apex, 7, block); return;
+    case 8: derive_in(facet, sigma, apex, 8, block); return;
+    default: derive_in(facet, sigma, apex, d, block); return;
+  }
 }
 
 }  // namespace drange::engine
