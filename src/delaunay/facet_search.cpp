@@ -379,7 +379,8 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
   const geometry::FloatingPointWatch watch;
   ranks_[static_cast<std::size_t>(d)] = points_.rank[static_cast<std::size_t>(id)];
   // row_ holds r_p (consider() computed it). Unrolled for fixed d, the test c == j folds
-  // away (the loops as written kept it: 5D, a sixth of this function's instructions).
+  // away, which the loops as written kept (with set_facet's loops above: callgrind, 5D 3 000
+  // points, the whole run -3.9%).
 #pragma GCC unroll 12
   for (int j = 0; j <= d; ++j) {
     double v = 0.0, a = 0.0;

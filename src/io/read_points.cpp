@@ -14,10 +14,10 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
-#include <system_error>
 #include <istream>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
 
 #include "drange/io.hpp"
