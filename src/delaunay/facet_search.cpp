@@ -860,22 +860,27 @@ __attribute__((target("avx2"))) unsigned points_in_reach_avx2(const double* lane
   return not_above(sum, reach2);
 }
 
+// The squared distance on one axis from c to four boxes [lo, hi]. MAXPD gives its second
+// operand unless the first is greater: these are the selects below > above ? below : above
+// and delta > 0 ? delta : 0 (NaN and -0 give 0) of the SSE2 version, one instruction each
+// (the second select compiled to a compare and a mask).
+__attribute__((target("avx2"))) inline Quad box_square(const double* lo, const double* hi, Quad c) {
+  const Quad below = load_quad(lo) - c, above = c - load_quad(hi);
+  const __m256d larger = _mm256_max_pd(reinterpret_cast<__m256d>(below), reinterpret_cast<__m256d>(above));
+  const Quad delta = reinterpret_cast<Quad>(_mm256_max_pd(larger, _mm256_setzero_pd()));
+  return delta * delta;
+}
+
 template <int D>
 __attribute__((target("avx2"))) unsigned boxes_in_reach_avx2(const double* boxes, const double* centre, int d, double reach2) {
   if constexpr (D > 0) d = D;
   constexpr int kLanes = LeafBlocks::kLanes;
-  const Quad zero = broadcast(0.0);
+  // The first axis starts the sum: 0 + delta^2 is delta^2 (a square is never -0).
   Quad sum[kQuads];
-  for (int i = 0; i < kQuads; ++i) sum[i] = zero;
-  for (int k = 0; k < d; ++k) {
+  for (int i = 0; i < kQuads; ++i) sum[i] = box_square(boxes + 4 * i, boxes + d * kLanes + 4 * i, broadcast(centre[0]));
+  for (int k = 1; k < d; ++k) {
     const Quad c = broadcast(centre[k]);
-    for (int i = 0; i < kQuads; ++i) {
-      const Quad below = load_quad(boxes + k * kLanes + 4 * i) - c;
-      const Quad above = c - load_quad(boxes + (d + k) * kLanes + 4 * i);
-      Quad delta = below > above ? below : above;
-      delta = delta > zero ? delta : zero;
-      sum[i] += delta * delta;
-    }
+    for (int i = 0; i < kQuads; ++i) sum[i] += box_square(boxes + k * kLanes + 4 * i, boxes + (d + k) * kLanes + 4 * i, c);
   }
   return not_above(sum, reach2);
 }
