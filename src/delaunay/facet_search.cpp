@@ -137,7 +137,16 @@ class SearchKernel final : public FacetSearch::Kernel {
     if (in_query(points_.point(id))) test(id);
   }
   // A point in the query region: is it on the open side, and does it beat the candidate?
-  void test(std::int32_t id);
+  // The facet's own vertices lie on its hyperplane (O = 0 exactly, which no filter certifies)
+  // and on every candidate's sphere, so every scan meets them; the candidate may be met again
+  // after being tried as a seed (I(p, p) = 0 likewise). Those are turned away here, inline,
+  // before the call to the test proper.
+  void test(std::int32_t id) {
+    for (int i = 0; i < dim(); ++i)
+      if (facet_[i] == id) return;
+    if (id != candidate_) test_other(id);
+  }
+  void test_other(std::int32_t id);
   void set_candidate(std::int32_t id);
   bool on_open_side(std::int32_t id);
   bool beats_candidate(std::int32_t id);
@@ -679,14 +688,9 @@ bool SearchKernel<D>::beats_candidate(std::int32_t id) {
 }
 
 template <int D>
-void SearchKernel<D>::test(std::int32_t id) {
+void SearchKernel<D>::test_other(std::int32_t id) {
   const int d = dim();
   const double* x = points_.point(id);
-  // The facet's own vertices lie on its hyperplane (O = 0 exactly, which no filter certifies);
-  // the candidate may be met again after being tried as a seed (I(p, p) = 0 likewise).
-  for (int i = 0; i < d; ++i)
-    if (facet_[i] == id) return;
-  if (id == candidate_) return;
   ++counters_->points_tested;
   double lift = 0.0;
   for (int k = 0; k < d; ++k) {
