@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # scripts/ab_time.sh: compares two drange builds on one input, one thread, runs interleaved
-# (A, B, A, B, ...) so that a change of machine load hits both alike; prints the minimum of
-# time_search and time_total of each, and B's search time over A's. The search-time figures
-# in commit messages ("min of 3, interleaved") come from this.
+# so that a change of machine load hits both alike; prints the minimum of time_search and
+# time_total of each, and B's search time over A's. The search-time figures in commit messages
+# ("min of 3, interleaved") come from this. The pairs alternate their order (A B, B A, A B,
+# ...): on the second machine the binary run first in each pair came out 4% to 10% faster, in
+# either order (bench/RESULTS.md, "The fourteenth round"), so a fixed order biased the ratio.
 #
 #   scripts/ab_time.sh N POINTS DRANGE_A DRANGE_B [delaunay options...]
 #
@@ -17,8 +19,10 @@ runs=$1 points=$2 a=$3 b=$4
 shift 4
 search_a=() search_b=() total_a=() total_b=()
 field() { grep -o "$1=[0-9.]*" | cut -d= -f2; }
-for _ in $(seq "$runs"); do
-  for side in a b; do
+for run in $(seq "$runs"); do
+  order="a b"
+  [ $((run % 2)) -eq 0 ] && order="b a"
+  for side in $order; do
     exe=${!side}
     stats=$(flock -s /tmp/drange-machine.lock "$exe" delaunay "$points" -o /dev/null --stats -q --threads 1 "$@" 2>&1)
     if [ "$side" = a ]; then
