@@ -233,6 +233,10 @@ class SearchKernel final : public FacetSearch::Kernel {
   bool lifted_exact_ = false;
   bool candidate_exact_ = false;
   std::array<double, kMaxRow> centroid_{};
+  // 1 / d for the centroid: it only orders the walk (right_first), so its rounding need not be
+  // that of f / d, and d^2 divisions per facet were 1.6% of the 5D samples (perf, 5D 8 000
+  // points). For d = 2, 4 and 8 the product is the quotient.
+  double inverse_d_;
   std::array<const double*, kMaxRow> rows_{};  // f_1, ..., f_{d-1}, p, q for the exact predicates
   std::array<std::int64_t, kMaxRow + 1> ranks_{};  // ranks of f_0, ..., f_{d-1}, p, q
 
@@ -279,6 +283,7 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
           geometry::laplace_roundings(points.dim + 1, geometry::lifted_entry_roundings(points.dim)))),
       box_orient_gamma_(orient_gamma_ + 2.01 * geometry::gamma_bound(geometry::laplace_roundings(points.dim - 1, 1))),
       minors_(points.dim + 1),
+      inverse_d_(1.0 / points.dim),
       seeds_(seeds),
       blocks_(points.blocks) {
   if (options.use_kdtree && options.sphere_shell && points.shell.active()) shell_ = &points.shell;
@@ -309,7 +314,7 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
   const geometry::FloatingPointWatch watch;
   for (int i = 0; i < d; ++i) {
     const double* f = points_.point(facet[i]);
-    for (int k = 0; k < d; ++k) centroid_[static_cast<std::size_t>(k)] += f[k] / d;
+    for (int k = 0; k < d; ++k) centroid_[static_cast<std::size_t>(k)] += f[k] * inverse_d_;
     if (i == 0) continue;
     rows_[static_cast<std::size_t>(i - 1)] = f;
     ranks_[static_cast<std::size_t>(i)] = points_.rank[static_cast<std::size_t>(facet[i])];
