@@ -47,7 +47,7 @@ class BoxVisitor {
   const double* query_upper() const { return hi_.data(); }
   bool prune(std::int32_t) const { return false; }
   bool right_first(const KdTree::Node&) const { return false; }
-  void leaf(std::int32_t begin, std::int32_t end) {
+  void leaf(std::int32_t /*node*/, std::int32_t begin, std::int32_t end) {
     for (std::int32_t id = begin; id < end; ++id)
       if (inside(id)) found.insert(id);
     if (!shrink_) return;

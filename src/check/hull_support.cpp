@@ -197,7 +197,7 @@ class OuterPointSearch {
   bool prune(std::int32_t node) const {
     return found_ >= 0 || !plane_.box_may_reach(tree_.lower(node), tree_.upper(node), outer_);
   }
-  void leaf(std::int32_t begin, std::int32_t end) {
+  void leaf(std::int32_t /*node*/, std::int32_t begin, std::int32_t end) {
     for (std::int32_t i = begin; i < end && found_ < 0; ++i) {
       const std::int32_t id = ids_[static_cast<std::size_t>(tree_.order()[static_cast<std::size_t>(i)])];
       if (plane_.side(points_.point(static_cast<std::size_t>(id))) == outer_) found_ = id;

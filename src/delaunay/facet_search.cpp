@@ -70,13 +70,15 @@ class SearchKernel final : public FacetSearch::Kernel {
   bool right_first(const spatial::KdTree::Node& node) const {
     return options_.visit_facet_child_first && centroid_[static_cast<std::size_t>(node.split_axis)] > node.split_value;
   }
-  void leaf(std::int32_t begin, std::int32_t end) {
+  // The walk hands over the leaf's node: looking it up from a point (KdTree::leaf_of) was a
+  // dependent load before every scan could start.
+  void leaf(std::int32_t node, std::int32_t begin, std::int32_t end) {
     if (shell_form_)
-      scan_shell_leaf(begin, end);
+      scan_shell_leaf(node, end);
     else if (ball_)
-      scan_blocks(begin, end);
+      scan_blocks(node, end);
     else if (candidate_ < 0)  // no candidate yet: every point of the leaf is in the query box
-      scan_blocks_for_open_side(begin, end);
+      scan_blocks_for_open_side(node, end);
     else
       scan_points(begin, end);
   }
@@ -110,14 +112,14 @@ class SearchKernel final : public FacetSearch::Kernel {
   // The leaf's points block by block (LeafBlocks): a block whose box misses the ball is
   // skipped; in the others, the squared distances of all the block's points are computed at
   // once (in_query's arithmetic, lane by lane: the same points pass).
-  void scan_blocks(std::int32_t begin, std::int32_t end);
+  void scan_blocks(std::int32_t leaf, std::int32_t end);
   // Before the first candidate, when the query box is all space: every point of the leaf is
   // tested, in order, up to the first on the open side, except those that on_open_side's
   // filter puts on the closed side, which are found block by block with its arithmetic lane
   // by lane (most of a leaf lies on the closed side of a facet, and in high d most searches
   // reach the walk without a candidate on the open side: 6D 1k points, 39 points tested per
   // facet, nearly all on the closed side).
-  void scan_blocks_for_open_side(std::int32_t begin, std::int32_t end);
+  void scan_blocks_for_open_side(std::int32_t leaf, std::int32_t end);
   // The lanes of a block (its first `count`) that on_open_side's filter does not certify on
   // the closed side.
   unsigned maybe_open_side(const double* lanes, int count) const;
@@ -183,7 +185,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   // cone_on_closed_side): inlined, they grew the walk that uniform input runs. One thread,
   // time_search, 7 interleaved runs, min / median against the eleventh round's build: inlined
   // 2D 1M +2.7% / +2.5%, 3D 200k +1.4% / +2.2%; out of line +1.9% / +2.5%, +0.8% / +0.3%.
-  [[gnu::noinline]] void scan_shell_leaf(std::int32_t begin, std::int32_t end);
+  [[gnu::noinline]] void scan_shell_leaf(std::int32_t leaf, std::int32_t end);
   // Whether the node's cone proves all its points on the closed side of the facet, where its
   // box does not (box_abs: prune's absolute tree over the box). On a sphere the facet's
   // hyperplane cuts it near the facet only, but the boxes of the points near it reach across.
@@ -603,7 +605,7 @@ bool SearchKernel<D>::shell_prunes(std::int32_t node) const {
 }
 
 template <int D>
-void SearchKernel<D>::scan_shell_leaf(std::int32_t begin, std::int32_t end) {
+void SearchKernel<D>::scan_shell_leaf(std::int32_t leaf, std::int32_t end) {
   // In a block, for W > 0 the points go by increasing offset s: sigma I(p, x) >= linear + W S_x
   // (linear: the block cone's bound), and once that is certified positive at s, it is at every
   // later point, whose exact offset is no smaller than s - u |s| - eta. For W < 0, by
@@ -613,7 +615,7 @@ void SearchKernel<D>::scan_shell_leaf(std::int32_t begin, std::int32_t end) {
   // the closed side, so the scan goes on from the block's ends.
   const std::int32_t* ids = shell_->block_ids.data();
   const double* offsets = shell_->block_offsets.data();
-  for (std::int32_t block = shell_->first_block[static_cast<std::size_t>(points_.tree.leaf_of(begin))];
+  for (std::int32_t block = shell_->first_block[static_cast<std::size_t>(leaf)];
        shell_->block_start[static_cast<std::size_t>(block)] < end; ++block) {
     std::int32_t first = shell_->block_start[static_cast<std::size_t>(block)], last = shell_->block_start[static_cast<std::size_t>(block) + 1];
     std::int32_t form_of = -1;  // the candidate whose form `linear` bounds
@@ -710,8 +712,8 @@ void SearchKernel<D>::test_other(std::int32_t id) {
 }
 
 template <int D>
-void SearchKernel<D>::scan_blocks(std::int32_t begin, std::int32_t end) {
-  const LeafBlocks::Groups groups = blocks_.groups(points_.tree.leaf_of(begin));
+void SearchKernel<D>::scan_blocks(std::int32_t leaf, std::int32_t end) {
+  const LeafBlocks::Groups groups = blocks_.groups(leaf);
   for (std::int32_t group = groups.first; group < groups.first + groups.count; ++group) {
     // Each new ball re-tests the slots and lanes still ahead (above the current bit), as a
     // branch per lane on the new distances would.
@@ -738,8 +740,8 @@ void SearchKernel<D>::scan_blocks(std::int32_t begin, std::int32_t end) {
 }
 
 template <int D>
-void SearchKernel<D>::scan_blocks_for_open_side(std::int32_t begin, std::int32_t end) {
-  const LeafBlocks::Groups groups = blocks_.groups(points_.tree.leaf_of(begin));
+void SearchKernel<D>::scan_blocks_for_open_side(std::int32_t leaf, std::int32_t end) {
+  const LeafBlocks::Groups groups = blocks_.groups(leaf);
   for (std::int32_t group = groups.first; group < groups.first + groups.count; ++group) {
     for (unsigned blocks = boxes_maybe_open_side(blocks_.boxes(group)); blocks != 0; blocks &= blocks - 1) {
       const int slot = __builtin_ctz(blocks);

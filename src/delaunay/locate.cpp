@@ -58,7 +58,7 @@ class NearestVisitor {
   const double* query_upper() const { return upper_.data(); }
   bool prune(std::int32_t) const { return false; }
   bool right_first(const spatial::KdTree::Node& node) const { return q_[node.split_axis] > node.split_value; }
-  void leaf(std::int32_t begin, std::int32_t end) {
+  void leaf(std::int32_t /*node*/, std::int32_t begin, std::int32_t end) {
     for (std::int32_t pos = begin; pos < end; ++pos) {
       const double* p = coords_.data() + static_cast<std::size_t>(pos) * static_cast<std::size_t>(d_);
       double dist = 0;

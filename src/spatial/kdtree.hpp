@@ -68,7 +68,8 @@ class KdTree {
   //   const double* query_lower(), query_upper()   the current query box (may shrink)
   //   bool prune(std::int32_t node)                 true: skip the node and its subtree
   //   bool right_first(const Node& node)            which child to enter first
-  //   void leaf(std::int32_t begin, std::int32_t end)  scan the points of a leaf
+  //   void leaf(std::int32_t node, std::int32_t begin, std::int32_t end)
+  //                                                 scan the points [begin, end) of leaf `node`
   // Returns the number of nodes entered (the search's recursive "calls"). D > 0: the caller
   // promises dim() == D, and the box tests are compiled for that dimension.
   template <int D = 0, class Visitor>
@@ -155,7 +156,7 @@ std::uint64_t KdTree::walk(Visitor& visitor, std::int32_t root) const {
     if (visitor.prune(i)) continue;
     const Node& node = nodes_[static_cast<std::size_t>(i)];
     if (node.right < 0) {
-      visitor.leaf(node.begin, node.end);
+      visitor.leaf(i, node.begin, node.end);
       continue;
     }
     // Push the child to visit second first. Their boxes are read when they are popped: fetch
