@@ -263,7 +263,7 @@ class SpatialFacetQueue {
   std::vector<std::int32_t> data_;
   // Per entry: the next entry of its key's list, -1 at the end. Apart from the entries: the
   // driver pops a batch of up to 256 facets at once, mostly down one key's list, and with the
-  // link inside each entry every pop waited for the miss on the entry before (4D to 5D: that
+  // link inside each entry every pop waited for the miss on the entry before (3D to 5D: that
   // load was a third of the serial loop's samples). Read from this small array, the links
   // are found first and the entries' misses overlap. Time_search, min of interleaved runs:
   // 3D 200k -5.9%, 3D 1M -9.7%, 4D 30k -5.3%, 4D 100k +0.5%, 5D 8k -10.5%, 5D 20k -7.9%.
