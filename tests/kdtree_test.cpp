@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <set>
@@ -37,8 +38,9 @@ Cloud grid_cloud(int dim, int side) {
   return Cloud{dim, drange::generate_points(drange::Distribution::Grid, total, dim, 1).coords};
 }
 
-// Reports every point of the visited leaves that lies in the box. With `shrink`, the box
-// shrinks towards its centre after every leaf, as the search's candidate sphere does.
+// Reports every point of the visited leaves that lies in the box, and the leaves as the walk
+// handed them over (node, begin, end). With `shrink`, the box shrinks towards its centre after
+// every leaf, as the search's candidate sphere does.
 class BoxVisitor {
  public:
   BoxVisitor(const std::vector<double>& points, int dim, std::vector<double> lo, std::vector<double> hi, bool shrink)
@@ -47,7 +49,8 @@ class BoxVisitor {
   const double* query_upper() const { return hi_.data(); }
   bool prune(std::int32_t) const { return false; }
   bool right_first(const KdTree::Node&) const { return false; }
-  void leaf(std::int32_t /*node*/, std::int32_t begin, std::int32_t end) {
+  void leaf(std::int32_t node, std::int32_t begin, std::int32_t end) {
+    leaves.push_back({node, begin, end});
     for (std::int32_t id = begin; id < end; ++id)
       if (inside(id)) found.insert(id);
     if (!shrink_) return;
@@ -64,6 +67,7 @@ class BoxVisitor {
     return true;
   }
   std::set<std::int32_t> found;
+  std::vector<std::array<std::int32_t, 3>> leaves;
 
  private:
   const std::vector<double>& points_;
@@ -111,6 +115,14 @@ void check_walks(const Cloud& cloud, unsigned seed, bool integer, int leaf_size 
       BoxVisitor top_down(points, cloud.dim, lo, hi, shrink), bottom_up(points, cloud.dim, lo, hi, shrink);
       tree.search(top_down);
       tree.search_from(bottom_up, tree.leaf_of(pick(rng)));
+      // Each leaf came with its own node (the search's scans index their blocks by it).
+      for (const BoxVisitor* v : {&top_down, &bottom_up})
+        for (const auto& [node, begin, end] : v->leaves) {
+          const KdTree::Node& n = tree.nodes()[static_cast<std::size_t>(node)];
+          ASSERT_LT(n.right, 0) << "node " << node << " is not a leaf";
+          ASSERT_EQ(n.begin, begin);
+          ASSERT_EQ(n.end, end);
+        }
       // Every point in the final box was in every earlier box: it must have been reported.
       for (BoxVisitor* v : {&top_down, &bottom_up})
         for (std::int32_t id = 0; id < cloud.size(); ++id)
