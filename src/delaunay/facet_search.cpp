@@ -639,6 +639,13 @@ void SearchKernel<D>::scan_shell_leaf(std::int32_t leaf, std::int32_t end) {
       }
       if (w < 0.0) --last;
       else ++first;
+      // Most points the block's bound lets through are still outside the candidate's sphere
+      // by their own form's value: certified so, they are turned away before the query, side
+      // and lifted tests (whose filters fail on a sphere) that consider() would run.
+      if (shell_sign(ids[i]) > 0) {
+        ++counters_->points_tested;
+        continue;
+      }
       consider(ids[i]);
     }
   }
