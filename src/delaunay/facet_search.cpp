@@ -164,9 +164,11 @@ class SearchKernel final : public FacetSearch::Kernel {
   bool float_shell_form();
   int shell_sign(std::int32_t id) const;
   [[gnu::noinline]] bool shell_prunes(std::int32_t node) const;
-  // A lower bound of the form's linear part, B . y + K, over the node's points: the larger of
-  // its bounds over the node's box and over its cone (SphereShell::cone); -infinity if none.
-  double shell_linear_low(std::int32_t node) const;
+  // A lower bound of the form's linear part, B . y + K, over the node's box; -infinity if none.
+  double box_linear_low(std::int32_t node) const;
+  // Whether `linear`, a lower bound of the linear part over the node's points, proves with the
+  // node's range of offsets that none of them beats the candidate.
+  bool shell_linear_prunes(std::int32_t node, double linear) const;
   // The same over a cone (SphereShell::cone); -infinity if the cone is too wide.
   double cone_linear_low(const double* cone) const;
   // The least of sign v . e over the unit vectors e of a cone of axis m (m . e >= cos_lo, as
@@ -273,7 +275,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   // cover (nonzero for float_shell_form's coefficients), and the sum of the first.
   std::array<double, kMaxRow> shell_b_err_{};
   double shell_lift_err_ = 0.0, shell_constant_err_ = 0.0, shell_b_err_sum_ = 0.0;
-  // Error bound factors of shell_sign, shell_prunes and shell_linear_low (see there).
+  // Error bound factors of shell_sign, shell_prunes and box_linear_low (see there).
   double shell_point_gamma_ = 0.0, shell_node_gamma_ = 0.0, shell_cone_gamma_ = 0.0, shell_sum_gamma_ = 0.0;
 
   // Per point (scratch).
@@ -542,7 +544,7 @@ int SearchKernel<D>::shell_sign(std::int32_t id) const {
 }
 
 template <int D>
-double SearchKernel<D>::shell_linear_low(std::int32_t node) const {
+double SearchKernel<D>::box_linear_low(std::int32_t node) const {
   // With the exact coefficients, sigma I = B . y + W S_x + K (shell_sign), y = x - g.
   // The box: each term's minimum over the node's box, summed in floating point: within
   // gamma(d + 3) a of its exact value on the truncated coefficients, and within 2.01 u a of
@@ -562,8 +564,7 @@ double SearchKernel<D>::shell_linear_low(std::int32_t node) const {
     coefficients += shell_b_err_[static_cast<std::size_t>(k)] * y;
   }
   if (!(a < geometry::kFilterOverflow)) return -kInfinity;  // also NaN
-  double best = low - shell_node_gamma_ * a - 1.01 * coefficients - 0x1p-1000;
-  return std::max(best, cone_linear_low(shell_->cone_of(node)));
+  return low - shell_node_gamma_ * a - 1.01 * coefficients - 0x1p-1000;
 }
 
 template <int D>
@@ -598,12 +599,19 @@ double SearchKernel<D>::cone_linear_low(const double* cone) const {
 
 template <int D>
 bool SearchKernel<D>::shell_prunes(std::int32_t node) const {
+  // The linear part is bounded over the node's cone (tight on a sphere's caps) and, where that
+  // does not prune, over its box: the test below only grows with the bound, so this prunes
+  // where the larger of the two would, and spares the box's sums where the cone suffices.
+  return shell_linear_prunes(node, cone_linear_low(shell_->cone_of(node))) || shell_linear_prunes(node, box_linear_low(node));
+}
+
+template <int D>
+bool SearchKernel<D>::shell_linear_prunes(std::int32_t node, double linear) const {
   // Every point x of the node has sigma I(p, x) > 0 (it is outside the candidate's sphere, so
   // it cannot win, now or later) when a lower bound of it over the node is positive: the linear
-  // part's (shell_linear_low) plus the least W S_x over the node's range of exact offsets
-  // (sphere_shell.cpp). W's truncation (2 u), the product and the sum round by 4 u of the
-  // absolute tree: shell_sum_gamma_.
-  const double linear = shell_linear_low(node);
+  // part's plus the least W S_x over the node's range of exact offsets (sphere_shell.cpp). W's
+  // truncation (2 u), the product and the sum round by 4 u of the absolute tree:
+  // shell_sum_gamma_.
   const double* range = shell_->of(node);
   const double low = linear + std::min(shell_lift_ * range[0], shell_lift_ * range[1]);
   const double largest = std::max(std::fabs(range[0]), std::fabs(range[1]));

@@ -60,7 +60,8 @@ struct SearchTotals {
 // between the turns it records) claims runs of consecutive facets, searches them in order and
 // leaves the results. The output is the serial loop's, simplex numbers included, for every
 // thread count; so are the statistics, since only the searches of facets open at their turn
-// are counted, exactly those the serial loop makes.
+// are counted, exactly those the serial loop makes, except the searches' work counters (points
+// tested, candidates): the shared seeds arrive in the order the threads happen to find them.
 //
 // When facets leave the queue matters for the spatial order (a facet opened meanwhile with a
 // smaller key would go first), not for FIFO. So under FIFO the window grows with the thread
