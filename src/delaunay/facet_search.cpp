@@ -174,9 +174,10 @@ class SearchKernel final : public FacetSearch::Kernel {
   // The least of sign v . e over the unit vectors e of a cone of axis m (m . e >= cos_lo, as
   // SphereShell::cone, cos_lo > 0), with norm >= |v|. sign v . e is convex along the axis and
   // least (-|v|) at e = -sign v / |v|; when that lies outside the cone, the least is on its rim,
-  // at beta cos_lo - |sign v - beta m| sin (beta = sign v . m), lower still with sin_hi. Each
-  // quantity is within (2 d + 8) u |v| of its exact value and m's length adds (d + 2) u |v|; the
-  // case split has a margin far above beta's rounding error.
+  // at beta cos_lo - |sign v - beta m| sin (beta = sign v . m), lower still with sin_hi. beta is
+  // within d u |v| of its exact value; |sign v - beta m| is bounded above from norm and beta
+  // alone (see there), which spares a second pass over v and m; the case split has a margin far
+  // above beta's rounding error.
   double least_on_cone(const double* v, double sign, double norm, const double* cone) const;
   // A leaf's points block by block (SphereShell::block_ids), each block's by offset from the
   // end whose offsets make the form smallest, up to the first point whose offset alone proves
@@ -573,12 +574,16 @@ double SearchKernel<D>::least_on_cone(const double* v, double sign, double norm,
   const double cos_lo = cone[d];
   double beta = 0.0;
   for (int k = 0; k < d; ++k) beta += sign * v[k] * cone[k];
-  double perp2 = 0.0;
-  for (int k = 0; k < d; ++k) {
-    const double t = sign * v[k] - beta * cone[k];
-    perp2 += t * t;
-  }
-  return -beta < (cos_lo - 1e-6) * norm ? beta * cos_lo - std::sqrt(perp2) * cone[d + 1] : -norm;
+  if (!(-beta < (cos_lo - 1e-6) * norm)) return -norm;
+  // With B the exact sign v . m, |sign v - B m|^2 = |v|^2 - B^2 (2 - |m|^2), and |m|^2 is within
+  // 2 (d + 2) u of 1, B within d u norm of beta: so it is at most norm^2 - beta^2 +
+  // (4 d + 4) u norm^2, and the slack below covers that and this line's roundings (3 u norm^2
+  // in the difference, the sum's and the root's, which (1 + 2 u) undoes). Near B = |v| the root
+  // is at most 5e-8 norm too large in 4D: far below the differences the cones decide.
+  constexpr double u = geometry::kUnitRoundoff;
+  const double norm2 = norm * norm;
+  const double perp2 = std::max(0.0, norm2 - beta * beta) + (4 * d + 16) * u * norm2;
+  return beta * cos_lo - std::sqrt(perp2) * (1 + 2 * u) * cone[d + 1];
 }
 
 template <int D>
