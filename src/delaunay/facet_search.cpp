@@ -579,7 +579,7 @@ double SearchKernel<D>::least_on_cone(const double* v, double sign, double norm,
   // 2 (d + 2) u of 1, B within d u norm of beta: so it is at most norm^2 - beta^2 +
   // (4 d + 4) u norm^2, and the slack below covers that and this line's roundings (3 u norm^2
   // in the difference, the sum's and the root's, which (1 + 2 u) undoes). Near B = |v| the root
-  // is at most 5e-8 norm too large in 4D: far below the differences the cones decide.
+  // is at most 6e-8 norm too large in 4D: far below the differences the cones decide.
   constexpr double u = geometry::kUnitRoundoff;
   const double norm2 = norm * norm;
   const double perp2 = std::max(0.0, norm2 - beta * beta) + (4 * d + 16) * u * norm2;
