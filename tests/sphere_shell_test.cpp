@@ -258,6 +258,28 @@ TEST(SphereShell, FloatFormIsWithinItsBoundsOfTheExactForm) {
                                         form))
           continue;
         ++accepted;
+        {
+          // The facet's minors kept from another candidate's form give this form bit for bit.
+          drange::engine::FacetMinors minors;
+          std::vector<const double*> other_rows = rows;
+          std::vector<double> other_offsets = row_offsets;
+          const std::int32_t other = ids[0] > 0 ? ids[0] - 1 : ids[static_cast<std::size_t>(d)] + 1;
+          other_rows.back() = store.point(other);
+          other_offsets.back() = shell.offset[static_cast<std::size_t>(other)];
+          drange::engine::FloatForm first{}, again{};
+          drange::engine::float_form(shell, d, f0, shell.offset[static_cast<std::size_t>(ids[0])], other_rows.data(), other_offsets.data(),
+                                     first, &minors);
+          ASSERT_TRUE(drange::engine::float_form(shell, d, f0, shell.offset[static_cast<std::size_t>(ids[0])], rows.data(),
+                                                 row_offsets.data(), again, &minors));
+          for (int c = 0; c < d; ++c) {
+            EXPECT_EQ(again.b[c], form.b[c]) << "d=" << d << " trial " << trial;
+            EXPECT_EQ(again.b_err[c], form.b_err[c]) << "d=" << d << " trial " << trial;
+          }
+          EXPECT_EQ(again.lift, form.lift);
+          EXPECT_EQ(again.lift_err, form.lift_err);
+          EXPECT_EQ(again.constant, form.constant);
+          EXPECT_EQ(again.constant_err, form.constant_err);
+        }
         // Cofactors of the last row of the (d + 1) x (d + 1) lifted matrix, exactly.
         std::vector<std::vector<mpq_class>> r(static_cast<std::size_t>(d));
         for (int i = 0; i < d; ++i) {

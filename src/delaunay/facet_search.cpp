@@ -268,6 +268,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   // them truncated to doubles (relative error below 2u), sigma folded in.
   const SphereShell* shell_ = nullptr;  // the points' shell, when active and asked for
   bool shell_form_ = false;             // the candidate's form is computed
+  FacetMinors facet_minors_;            // float_form's minors of this facet's rows, once computed
   std::array<double, kMaxRow> shell_b_{};
   double shell_lift_ = 0.0, shell_constant_ = 0.0;
   double shell_eta_term_ = 0.0;  // |lift| times the error bound of the points' offsets, with margin
@@ -499,7 +500,8 @@ bool SearchKernel<D>::float_shell_form() {
     row_offsets[static_cast<std::size_t>(i)] = shell_->offset[static_cast<std::size_t>(i < d - 1 ? facet_[i + 1] : candidate_)];
   FloatForm form;
   const geometry::FloatingPointWatch watch;
-  const bool good = float_form(*shell_, d, f0_, shell_->offset[static_cast<std::size_t>(facet_[0])], rows_.data(), row_offsets.data(), form);
+  const bool good =
+      float_form(*shell_, d, f0_, shell_->offset[static_cast<std::size_t>(facet_[0])], rows_.data(), row_offsets.data(), form, &facet_minors_);
   if (!good || !watch.clean()) return false;
   for (int k = 0; k < d; ++k) {
     shell_b_[static_cast<std::size_t>(k)] = form.b[k];
@@ -1087,6 +1089,7 @@ std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, Se
   set_facet(facet, sigma);
   candidate_ = -1;
   shell_form_ = false;
+  facet_minors_.ready = false;
   reset_box();
   if (options_.seed_candidate) {
     for (int i = 0; i < d; ++i)

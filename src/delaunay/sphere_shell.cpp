@@ -361,9 +361,47 @@ namespace {
 // Laplace expansions grow as (d - 1)!, and in 8D they cost more than GMP's Bareiss (sphere,
 // 80 points: time_total 17.4 s with GMP, 28.0 s in floating point); in 6D and 7D they win
 // (500 points in 6D: 8.23 -> 1.45 s; 200 in 7D: 17.4 -> 6.46 s).
+// The index of the column pair {c, j}, c < j, among the d (d - 1) / 2 pairs.
+constexpr int pair_index(int d, int c, int j) { return c * (2 * d - c - 1) / 2 + (j - c - 1); }
+
+// FacetMinors for the facet rows a[0..d-2]: the (d - 2)-minors without row i and columns c < j,
+// then the (d - 1)-minors without column c, expanded along row 0 over the former (so each is
+// minor_of's value for rows 0..d-2, bit for bit).
+template <int N>
+void fill_facet_minors(const double (&a)[N][N], FacetMinors& minors) {
+  constexpr int d = N;
+  for (int i = 0; i < d - 1; ++i) {
+    int rows_left[N - 2];
+    for (int t = 0, r = 0; t < d - 1; ++t)
+      if (t != i) rows_left[r++] = t;
+    for (int c = 0; c < d; ++c)
+      for (int j = c + 1; j < d; ++j) {
+        int columns_left[N - 2];
+        for (int t = 0, k = 0; t < d; ++t)
+          if (t != c && t != j) columns_left[k++] = t;
+        double* m = minors.sub[i][pair_index(d, c, j)];
+        minor_of<N, N - 2>(a, rows_left, columns_left, m[0], m[1]);
+      }
+  }
+  for (int c = 0; c < d; ++c) {
+    double value = 0.0, tree = 0.0;
+    for (int t = 0, position = 0; t < d; ++t) {
+      if (t == c) continue;
+      const double* m = minors.sub[0][c < t ? pair_index(d, c, t) : pair_index(d, t, c)];
+      const double entry = a[0][t];
+      value += (position % 2 ? -entry : entry) * m[0];
+      tree += std::fabs(entry) * m[1];
+      ++position;
+    }
+    minors.top[c][0] = value;
+    minors.top[c][1] = tree;
+  }
+  minors.ready = true;
+}
+
 template <int N>
 bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, const double* const* rows, const double* row_offsets,
-                      FloatForm& form) {
+                      FloatForm& form, FacetMinors* minors) {
   constexpr int d = N;
   // With S_x = |x - g|^2 - rho, |x - f0|^2 = (S_x - S_0) - 2 (f0 - g) . (x - f0): the lift
   // column less a combination of the spatial ones, so the lifted determinant is
@@ -405,19 +443,34 @@ bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, con
         alpha[c][i] = a[i1][c1] * a[i2][c2] - a[i1][c2] * a[i2][c1];
         tau[c][i] = std::fabs(a[i1][c1]) * std::fabs(a[i2][c2]) + std::fabs(a[i1][c2]) * std::fabs(a[i2][c1]);
       }
-  } else {  // d = 4, 5: the cofactors as (d - 1) x (d - 1) minors
-    for (int c = 0; c < d; ++c)
-      for (int i = 0; i < d; ++i) {
-        int rows_left[N - 1], columns_left[N - 1];
-        for (int t = 0, r = 0, k = 0; t < d; ++t) {
-          if (t != i) rows_left[r++] = t;
-          if (t != c) columns_left[k++] = t;
-        }
+  } else {  // d = 4 to 7: the cofactors as (d - 1) x (d - 1) minors
+    // Without the candidate's row (i = d - 1): a minor of the facet's rows. With it, the
+    // minor's rows are taken candidate first (d - 2 swaps: the sign (-1)^d), and its Laplace
+    // expansion along that row runs over (d - 2)-minors of the facet's rows. Either way the
+    // value is minor_of's for those rows (the bound below holds for any row order: the tree
+    // is the same), and the facet's minors are computed once per facet (FacetMinors).
+    FacetMinors local;
+    if (minors == nullptr) minors = &local;
+    if (!minors->ready) fill_facet_minors<N>(a, *minors);
+    for (int c = 0; c < d; ++c) {
+      for (int i = 0; i < d - 1; ++i) {
         double value = 0.0, tree = 0.0;
-        minor_of<N, N - 1>(a, rows_left, columns_left, value, tree);
+        for (int t = 0, position = 0; t < d; ++t) {
+          if (t == c) continue;
+          const double* m = minors->sub[i][c < t ? pair_index(d, c, t) : pair_index(d, t, c)];
+          const double entry = a[d - 1][t];
+          value += (position % 2 ? -entry : entry) * m[0];
+          tree += std::fabs(entry) * m[1];
+          ++position;
+        }
+        if (d % 2) value = -value;
         alpha[c][i] = (i + c) % 2 ? -value : value;
         tau[c][i] = tree;
       }
+      const double value = minors->top[c][0];
+      alpha[c][d - 1] = (d - 1 + c) % 2 ? -value : value;
+      tau[c][d - 1] = minors->top[c][1];
+    }
   }
   const int m = geometry::laplace_roundings(d - 1, 1);
   const double margin = 1 + geometry::gamma_bound(4 * d + 4);
@@ -465,14 +518,14 @@ bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, con
 }  // namespace
 
 bool float_form(const SphereShell& shell, int d, const double* f0, double s0, const double* const* rows, const double* row_offsets,
-                FloatForm& form) {
+                FloatForm& form, FacetMinors* minors) {
   switch (d) {
-    case 2: return float_form_fixed<2>(shell, f0, s0, rows, row_offsets, form);
-    case 3: return float_form_fixed<3>(shell, f0, s0, rows, row_offsets, form);
-    case 4: return float_form_fixed<4>(shell, f0, s0, rows, row_offsets, form);
-    case 5: return float_form_fixed<5>(shell, f0, s0, rows, row_offsets, form);
-    case 6: return float_form_fixed<6>(shell, f0, s0, rows, row_offsets, form);
-    case 7: return float_form_fixed<7>(shell, f0, s0, rows, row_offsets, form);
+    case 2: return float_form_fixed<2>(shell, f0, s0, rows, row_offsets, form, minors);
+    case 3: return float_form_fixed<3>(shell, f0, s0, rows, row_offsets, form, minors);
+    case 4: return float_form_fixed<4>(shell, f0, s0, rows, row_offsets, form, minors);
+    case 5: return float_form_fixed<5>(shell, f0, s0, rows, row_offsets, form, minors);
+    case 6: return float_form_fixed<6>(shell, f0, s0, rows, row_offsets, form, minors);
+    case 7: return float_form_fixed<7>(shell, f0, s0, rows, row_offsets, form, minors);
     default: return false;
   }
 }

@@ -84,8 +84,18 @@ struct FloatForm {
   double lift, lift_err, constant, constant_err;
   double b_err_sum;  // sum of b_err
 };
+// From 4D, the form's cofactors are expanded along the candidate's row (rows[d - 1]), over
+// minors of the facet's rows alone: those are the same for every candidate of a facet, and
+// `minors`, when given, keeps them from the first call (ready) until the caller resets it for
+// another facet. Without it they are computed for this call only; the form is the same.
+struct FacetMinors {
+  static constexpr int kPairs = kFloatFormMaxDim * (kFloatFormMaxDim - 1) / 2;
+  bool ready = false;
+  double sub[kFloatFormMaxDim - 1][kPairs][2];  // facet rows but i, columns but a pair: value, tree
+  double top[kFloatFormMaxDim][2];              // all the facet rows, columns but c: value, tree
+};
 bool float_form(const SphereShell& shell, int d, const double* f0, double s0, const double* const* rows, const double* row_offsets,
-                FloatForm& form);
+                FloatForm& form, FacetMinors* minors = nullptr);
 
 // The shell of `n` points of dimension `dim` (row-major, in the tree's order: node ranges are
 // point ids), or an inactive one when fewer than 9 in 10 of them lie within a relative 2^-10
