@@ -231,9 +231,9 @@ TEST(SphereShell, FloatFormIsWithinItsBoundsOfTheExactForm) {
   // The exact coefficients from the lifted determinant's cofactors along x's row (C_c for the
   // spatial columns, C_L for the lift), rewritten around g: B_c = C_c - 2 C_L y0_c, W = C_L,
   // K = C_L (rho + |y0|^2) - C . y0 with y0 = f0 - g. Each float coefficient must be within
-  // its bound of them; and most simplices must get a float form at all (2D to 7D).
+  // its bound of them; and most simplices must get a float form at all (2D to 8D).
   drange::test::TestRandom random(41);
-  for (int d : {2, 3, 4, 5, 6, 7}) {
+  for (int d : {2, 3, 4, 5, 6, 7, 8}) {
     for (double noise : {0.0, 1e-12, 1e-9}) {
       const auto store = store_of(sphere(3000, d, 42 + static_cast<std::uint64_t>(d), 1.5, 0.25, noise));
       const drange::engine::SphereShell& shell = store.shell;

@@ -157,7 +157,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   // tests that use it: a point's sign of sigma I(p, x) (0 when undecided), and a node's proof
   // that none of its points beats the candidate.
   void set_shell_form();
-  // The form in floating point (sphere_shell.hpp, float_form; d = 2 to 7) with its
+  // The form in floating point (sphere_shell.hpp, float_form; d = 2 to 8) with its
   // coefficients' error bounds; false where that declines or the arithmetic under- or
   // overflowed: then set_shell_form asks GMP. 3D sphere, 32 000 points: time_search 0.519 ->
   // 0.232 s; 4D sphere, 5 000 points: 0.905 -> 0.317 s.

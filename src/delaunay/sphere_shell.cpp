@@ -356,11 +356,6 @@ SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, cons
 }
 
 namespace {
-// float_form for d = N: loops of fixed length (a run-time d made the 4D form a quarter slower
-// once 5D was added: 4D sphere, 5 000 points, time_search 0.284 -> 0.352 s). Up to 7D: the
-// Laplace expansions grow as (d - 1)!, and in 8D they cost more than GMP's Bareiss (sphere,
-// 80 points: time_total 17.4 s with GMP, 28.0 s in floating point); in 6D and 7D they win
-// (500 points in 6D: 8.23 -> 1.45 s; 200 in 7D: 17.4 -> 6.46 s).
 // The index of the column pair {c, j}, c < j, among the d (d - 1) / 2 pairs.
 constexpr int pair_index(int d, int c, int j) { return c * (2 * d - c - 1) / 2 + (j - c - 1); }
 
@@ -399,6 +394,13 @@ void fill_facet_minors(const double (&a)[N][N], FacetMinors& minors) {
   minors.ready = true;
 }
 
+// float_form for d = N: loops of fixed length (a run-time d made the 4D form a quarter slower
+// once 5D was added: 4D sphere, 5 000 points, time_search 0.284 -> 0.352 s). Up to 8D: the
+// Laplace expansions grow as (d - 1)!, and while they were made per candidate, 8D's cost more
+// than GMP's Bareiss (sphere, 80 points: time_total 17.4 s with GMP, 28.0 s in floating
+// point); 6D and 7D won (500 points in 6D: 8.23 -> 1.45 s; 200 in 7D: 17.4 -> 6.46 s). With
+// the facet's minors made once per facet (FacetMinors), 8D wins too (time_search 38.4 s with
+// GMP, 12.8 s in floating point, same run of a slower machine).
 template <int N>
 bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, const double* const* rows, const double* row_offsets,
                       FloatForm& form, FacetMinors* minors) {
@@ -526,6 +528,7 @@ bool float_form(const SphereShell& shell, int d, const double* f0, double s0, co
     case 5: return float_form_fixed<5>(shell, f0, s0, rows, row_offsets, form, minors);
     case 6: return float_form_fixed<6>(shell, f0, s0, rows, row_offsets, form, minors);
     case 7: return float_form_fixed<7>(shell, f0, s0, rows, row_offsets, form, minors);
+    case 8: return float_form_fixed<8>(shell, f0, s0, rows, row_offsets, form, minors);
     default: return false;
   }
 }

@@ -18,7 +18,7 @@
 //
 // The form's terms must be small for the bounds to be tight, so it is computed around g and
 // rho, once per candidate: in floating point from the points' offsets with a bound of each
-// coefficient's error (float_form, d = 2 to 7), else exactly (geometry::exact_lifted_form);
+// coefficient's error (float_form, d = 2 to 8), else exactly (geometry::exact_lifted_form);
 // and each point's offset from the sphere, |x - g|^2 - rho, once per point in double-double
 // arithmetic: the points' tests then resolve their sign to within rounding of those small
 // terms, and GMP is left with the true ties. (With the search's own form, whose terms are a
@@ -74,11 +74,11 @@ struct SphereShell {
 // The lifted determinant det[r_1; ...; r_d; r_x] (rows relative to f0, as in
 // geometry::exact_lifted_form) as b . (x - g) + lift (|x - g|^2 - rho) + constant, computed in
 // floating point from the points' offsets, with bounds of each coefficient's distance to the
-// exact one: for d = 2 to 7. `rows` are the d points after f0, `s0` and `row_offsets` their
+// exact one: for d = 2 to 8. `rows` are the d points after f0, `s0` and `row_offsets` their
 // offsets (SphereShell::offset). False when a bound is not small against its terms (a
 // near-flat simplex, or points exactly on the fitted sphere, where b is 0) or a value is too
 // large; the caller also watches the floating-point flags (an underflow voids the bounds).
-constexpr int kFloatFormMaxDim = 7;
+constexpr int kFloatFormMaxDim = 8;
 struct FloatForm {
   double b[kFloatFormMaxDim], b_err[kFloatFormMaxDim];
   double lift, lift_err, constant, constant_err;
