@@ -29,7 +29,7 @@ std::string generate_help() {
              "  ball        uniform in the unit ball\n"
              "  sphere      uniform on the unit sphere (cospherical up to rounding: degenerate,\n"
              "              and the slowest case for drange: 1.5 to 1.7 times uniform input of\n"
-             "              the same N in 2D and 3D, 2 to 2.6 in 4D and 5D and more as N grows)\n"
+             "              the same N in 2D and 3D, about 2 in 4D to 6D, more for larger N or D)\n"
              "  gaussian    standard normal in every coordinate\n"
              "  clustered   floor(sqrt(N)) gaussian clusters (deviation 0.01) around uniform centres\n"
              "  grid        the first N points of the integer grid {0..k-1}^D in lexicographic\n"
