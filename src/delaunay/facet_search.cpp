@@ -200,6 +200,12 @@ class SearchKernel final : public FacetSearch::Kernel {
   // box does not (box_abs: prune's absolute tree over the box). On a sphere the facet's
   // hyperplane cuts it near the facet only, but the boxes of the points near it reach across.
   [[gnu::noinline]] bool cone_on_closed_side(std::int32_t node, double box_abs) const;
+  // Its terms that depend on the facet only, once per facet (when there is a shell).
+  void set_facet_on_shell();
+  struct FacetOnShell {
+    double norm, offset, offset_abs;
+  };
+  FacetOnShell facet_on_shell_{};
   // The sign of sigma O over the computed value, when certified with the bound factor `gamma`
   // or proved exact; else 0.
   int orientation_sign(double value, double abs_tree, double gamma) const;
@@ -1066,6 +1072,18 @@ bool SearchKernel<D>::cone_on_closed_side(std::int32_t node, double box_abs) con
   const int d = dim();
   const double* cone = shell_->cone_of(node);
   if (!(cone[d] > 0.0) || !facet_clean_) return false;
+  const double norm = facet_on_shell_.norm;
+  const double most = -least_on_cone(a_.data(), -1.0, norm, cone);
+  const double value = facet_on_shell_.offset + (most > 0.0 ? most * cone[d + 3] : most * cone[d + 2]);
+  const double bound = shell_cone_gamma_ * (facet_on_shell_.offset_abs + norm * cone[d + 3]) + box_orient_gamma_ * box_abs + 0x1p-1000;
+  return value < -bound;  // false on NaN
+}
+
+template <int D>
+void SearchKernel<D>::set_facet_on_shell() {
+  // cone_on_closed_side's terms that depend on the facet only: |a| (with a margin for its
+  // rounding) and a . (g - f0) with its absolute tree.
+  const int d = dim();
   const double* g = shell_->centre.data();
   double norm2 = 0.0, offset = 0.0, offset_abs = 0.0;
   for (int k = 0; k < d; ++k) {
@@ -1075,11 +1093,7 @@ bool SearchKernel<D>::cone_on_closed_side(std::int32_t node, double box_abs) con
     offset += a * t;
     offset_abs += std::fabs(a) * std::fabs(t);
   }
-  const double norm = std::sqrt(norm2) * (1 + geometry::gamma_bound(d + 2));
-  const double most = -least_on_cone(a_.data(), -1.0, norm, cone);
-  const double value = offset + (most > 0.0 ? most * cone[d + 3] : most * cone[d + 2]);
-  const double bound = shell_cone_gamma_ * (offset_abs + norm * cone[d + 3]) + box_orient_gamma_ * box_abs + 0x1p-1000;
-  return value < -bound;  // false on NaN
+  facet_on_shell_ = {std::sqrt(norm2) * (1 + geometry::gamma_bound(d + 2)), offset, offset_abs};
 }
 
 template <int D>
@@ -1090,6 +1104,7 @@ std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, Se
   candidate_ = -1;
   shell_form_ = false;
   facet_minors_.ready = false;
+  if (shell_ != nullptr) set_facet_on_shell();
   reset_box();
   if (options_.seed_candidate) {
     for (int i = 0; i < d; ++i)
