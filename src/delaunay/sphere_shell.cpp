@@ -359,6 +359,20 @@ namespace {
 // The index of the column pair {c, j}, c < j, among the d (d - 1) / 2 pairs.
 constexpr int pair_index(int d, int c, int j) { return c * (2 * d - c - 1) / 2 + (j - c - 1); }
 
+// The Laplace expansion along `row` (d entries) of a minor without column c, over `sub`, its
+// minors without columns c and t (by pair_index): minor_of's value and tree for the minor's
+// rows taken `row` first.
+void expand_along(const double* row, const double (*sub)[2], int d, int c, double& value, double& tree) {
+  value = tree = 0.0;
+  for (int t = 0, position = 0; t < d; ++t) {
+    if (t == c) continue;
+    const double* m = sub[c < t ? pair_index(d, c, t) : pair_index(d, t, c)];
+    value += (position % 2 ? -row[t] : row[t]) * m[0];
+    tree += std::fabs(row[t]) * m[1];
+    ++position;
+  }
+}
+
 // FacetMinors for the facet rows a[0..d-2]: the (d - 2)-minors without row i and columns c < j,
 // then the (d - 1)-minors without column c, expanded along row 0 over the former (so each is
 // minor_of's value for rows 0..d-2, bit for bit).
@@ -378,19 +392,7 @@ void fill_facet_minors(const double (&a)[N][N], FacetMinors& minors) {
         minor_of<N, N - 2>(a, rows_left, columns_left, m[0], m[1]);
       }
   }
-  for (int c = 0; c < d; ++c) {
-    double value = 0.0, tree = 0.0;
-    for (int t = 0, position = 0; t < d; ++t) {
-      if (t == c) continue;
-      const double* m = minors.sub[0][c < t ? pair_index(d, c, t) : pair_index(d, t, c)];
-      const double entry = a[0][t];
-      value += (position % 2 ? -entry : entry) * m[0];
-      tree += std::fabs(entry) * m[1];
-      ++position;
-    }
-    minors.top[c][0] = value;
-    minors.top[c][1] = tree;
-  }
+  for (int c = 0; c < d; ++c) expand_along(a[0], minors.sub[0], d, c, minors.top[c][0], minors.top[c][1]);
   minors.ready = true;
 }
 
@@ -445,7 +447,7 @@ bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, con
         alpha[c][i] = a[i1][c1] * a[i2][c2] - a[i1][c2] * a[i2][c1];
         tau[c][i] = std::fabs(a[i1][c1]) * std::fabs(a[i2][c2]) + std::fabs(a[i1][c2]) * std::fabs(a[i2][c1]);
       }
-  } else {  // d = 4 to 7: the cofactors as (d - 1) x (d - 1) minors
+  } else {  // d = 4 to 8: the cofactors as (d - 1) x (d - 1) minors
     // Without the candidate's row (i = d - 1): a minor of the facet's rows. With it, the
     // minor's rows are taken candidate first (d - 2 swaps: the sign (-1)^d), and its Laplace
     // expansion along that row runs over (d - 2)-minors of the facet's rows. Either way the
@@ -457,14 +459,7 @@ bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, con
     for (int c = 0; c < d; ++c) {
       for (int i = 0; i < d - 1; ++i) {
         double value = 0.0, tree = 0.0;
-        for (int t = 0, position = 0; t < d; ++t) {
-          if (t == c) continue;
-          const double* m = minors->sub[i][c < t ? pair_index(d, c, t) : pair_index(d, t, c)];
-          const double entry = a[d - 1][t];
-          value += (position % 2 ? -entry : entry) * m[0];
-          tree += std::fabs(entry) * m[1];
-          ++position;
-        }
+        expand_along(a[d - 1], minors->sub[i], d, c, value, tree);
         if (d % 2) value = -value;
         alpha[c][i] = (i + c) % 2 ? -value : value;
         tau[c][i] = tree;
