@@ -361,8 +361,11 @@ constexpr int pair_index(int d, int c, int j) { return c * (2 * d - c - 1) / 2 +
 
 // The Laplace expansion along `row` (d entries) of a minor without column c, over `sub`, its
 // minors without columns c and t (by pair_index): minor_of's value and tree for the minor's
-// rows taken `row` first.
-void expand_along(const double* row, const double (*sub)[2], int d, int c, double& value, double& tree) {
+// rows taken `row` first. Inlined, for d = N (called out of line, with d at run time: 5D
+// sphere of 1 500 points, +3% instructions over the whole run).
+template <int N>
+[[gnu::always_inline]] inline void expand_along(const double* row, const double (*sub)[2], int c, double& value, double& tree) {
+  constexpr int d = N;
   value = tree = 0.0;
   for (int t = 0, position = 0; t < d; ++t) {
     if (t == c) continue;
@@ -392,7 +395,7 @@ void fill_facet_minors(const double (&a)[N][N], FacetMinors& minors) {
         minor_of<N, N - 2>(a, rows_left, columns_left, m[0], m[1]);
       }
   }
-  for (int c = 0; c < d; ++c) expand_along(a[0], minors.sub[0], d, c, minors.top[c][0], minors.top[c][1]);
+  for (int c = 0; c < d; ++c) expand_along<N>(a[0], minors.sub[0], c, minors.top[c][0], minors.top[c][1]);
   minors.ready = true;
 }
 
@@ -459,7 +462,7 @@ bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, con
     for (int c = 0; c < d; ++c) {
       for (int i = 0; i < d - 1; ++i) {
         double value = 0.0, tree = 0.0;
-        expand_along(a[d - 1], minors->sub[i], d, c, value, tree);
+        expand_along<N>(a[d - 1], minors->sub[i], c, value, tree);
         if (d % 2) value = -value;
         alpha[c][i] = (i + c) % 2 ? -value : value;
         tau[c][i] = tree;
