@@ -444,9 +444,13 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
     return;
   }
   double radius2 = 0.0, error2 = 0.0, magnitude = 0.0;
+  // Two divisions, then products: a reciprocal's rounding adds u to the centre's relative
+  // error, which the reach's 8 (d + 4) u of slack below covers, and to its error's, which the
+  // factor 1 + 1e-6 does.
+  const double minus_half_over_wd = -1 / (2 * wd), half_over_margin = 1 / (2 * (std::fabs(wd) - ewd));
   for (int k = 0; k < d; ++k) {
-    const double dc = -w_[static_cast<std::size_t>(k)] / (2 * wd);
-    const double err = (gamma * w_abs_[static_cast<std::size_t>(k)] + 2 * std::fabs(dc) * ewd) / (2 * (std::fabs(wd) - ewd));
+    const double dc = w_[static_cast<std::size_t>(k)] * minus_half_over_wd;
+    const double err = (gamma * w_abs_[static_cast<std::size_t>(k)] + 2 * std::fabs(dc) * ewd) * half_over_margin;
     centre_[static_cast<std::size_t>(k)] = f0_[k] + dc;
     radius2 += dc * dc;
     error2 += err * err;
