@@ -443,7 +443,7 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
     reset_box();
     return;
   }
-  double radius2 = 0.0, error2 = 0.0, magnitude = 0.0;
+  double radius2 = 0.0, error = 0.0, magnitude = 0.0;
   // Two divisions, then products: a reciprocal's rounding adds u to the centre's relative
   // error, which the reach's 8 (d + 4) u of slack below covers, and to its error's, which the
   // factor 1 + 1e-6 does.
@@ -453,13 +453,13 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
     const double err = (gamma * w_abs_[static_cast<std::size_t>(k)] + 2 * std::fabs(dc) * ewd) * half_over_margin;
     centre_[static_cast<std::size_t>(k)] = f0_[k] + dc;
     radius2 += dc * dc;
-    error2 += err * err;
+    error += err;  // the 1-norm of the centre's error: at least its length, without a root
     magnitude = std::max(magnitude, std::fabs(centre_[static_cast<std::size_t>(k)]));
   }
   const double radius = std::sqrt(radius2);
   // Twice the centre's error (the radius moves by at most as much), plus the roundings of
   // computing the centre, the radius and the box bounds.
-  const double reach = radius + 2 * std::sqrt(error2) * (1 + 1e-6) +
+  const double reach = radius + 2 * error * (1 + 1e-6) +
                        8 * (d + 4) * geometry::kUnitRoundoff * (magnitude + radius);
   if (!std::isfinite(reach)) {
     reset_box();
