@@ -13,6 +13,7 @@
 #include <numeric>
 #include <random>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -169,6 +170,13 @@ TEST(DelaunayOracle, DegenerateTinyInputsMatchPerturbedBruteForce) {
       // Regression: products underflowing to zero inside the filter, then multiplied by 1e100,
       // once gave 8 overlapping triangles here (an unscaled input: it spans 5e-324 to 1e100).
       {"underflowing products", cloud(2, {0, 0, 1e-135, 0, 1, 1e-190, 1e100, 1e-130, -1e100, 5e-324})},
+      // Scaled inputs (below 1 in magnitude) whose facet and candidate minors underflow inside
+      // the cluster: the search reads no floating-point flag (kUnderflowError).
+      {"unit square beside a 1e-100 cluster",
+       cloud(2, {1, 0, 0, 1, -1, 0, 0, -1, 3e-100, 1e-100, 1e-100, 2e-100, -2e-100, 1e-100, 0, -3e-100, 2e-100, -1e-100})},
+      {"unit octahedron beside a 1e-80 cluster",
+       cloud(3, {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 3e-80, 1e-80, 2e-80, -1e-80, 2e-80, 1e-80,
+                 1e-80, -3e-80, 2e-80, -2e-80, 1e-80, -1e-80, 1e-80, 1e-80, -3e-80})},
   };
   for (const auto& [name, points] : cases) {
     const Triangulation t = drange::delaunay(points);
@@ -316,6 +324,20 @@ TEST(DelaunayRobustness, HardFamilies) {
     PointCloud c{3, {}};  // a tiny cluster
     for (int i = 0; i < 2000; ++i) c.coords.insert(c.coords.end(), {1e-9 * u(rng), 1e-9 * u(rng), 1e-9 * u(rng)});
     cases.emplace_back("cluster 1e-9", c);
+  }
+  for (const double scale : {1e-60, 1e-100, 1e-200}) {
+    // Unit points beside a cluster so small that its minors underflow (the lifted ones from
+    // 1e-60 in 3D, all of them at 1e-200), in one scaled input.
+    for (int d = 2; d <= 3; ++d) {
+      PointCloud c{d, {}};
+      for (int i = 0; i < 300; ++i)
+        for (int k = 0; k < d; ++k) c.coords.push_back(u(rng) - 0.5);
+      for (int i = 0; i < 300; ++i)
+        for (int k = 0; k < d; ++k) c.coords.push_back(scale * (u(rng) - 0.5));
+      std::ostringstream name;
+      name << "unit points beside a cluster of " << scale << " in " << d << "D";
+      cases.emplace_back(name.str(), c);
+    }
   }
   {
     PointCloud c{2, {}};  // collinear subsets inside and on the hull

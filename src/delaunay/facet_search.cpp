@@ -213,6 +213,16 @@ class SearchKernel final : public FacetSearch::Kernel {
   const PointStore& points_;
   SearchOptions options_;
   int d_;
+  // The points are scaled below 1 in magnitude (PointStore::scaled): then no operation of the
+  // search overflows or is invalid, and what underflow adds to its values stays below
+  // geometry::kUnderflowError, which every fast filter's floor absorbs and the query ball
+  // allows for. The error bounds of the filters and the ball hold, with no floating-point flag
+  // read: a read waits for the arithmetic before it. Reading them after each facet's and each
+  // candidate's minors (2.7 candidates per simplex in 2D) cost 5% to 6% of a 2D search's time
+  // (200k points, time_search 0.184 -> 0.173 s and 0.189 -> 0.179 s without the reads, min of
+  // 7 and 9 interleaved pairs; 3D 50k 0.287 -> 0.283 s); one read per search, after it, still
+  // cost 2D 1M 8% (0.909 -> 0.987 s, 7 pairs).
+  const bool filters_hold_;
   double orient_gamma_;  // error bound factors (error_bound.hpp) of O(x) and I(p, x)
   double lifted_gamma_;
   // The factor of a box's largest sigma O (prune, boxes_maybe_open_side). That sum takes each
@@ -237,10 +247,6 @@ class SearchKernel final : public FacetSearch::Kernel {
   // the d-minors along p's row, with their signs and sigma folded in (negation is exact, so w is
   // the same double as expanding each minor and multiplying by its sign).
   std::array<std::array<double, kMaxRow>, kMaxRow> k_{}, k_abs_{};
-  // True when no underflow, overflow or invalid operation occurred in the facet's minors (and,
-  // below, in the candidate's): the fast filters and the query box rely on it.
-  bool facet_clean_ = true;
-  bool candidate_clean_ = true;
   // True when a_ is exact and O(x) is computed without rounding whenever its absolute tree
   // is below orient_exact_limit_ (dyadic points, see set_facet).
   bool orientation_exact_ = false;
@@ -298,6 +304,7 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
     : points_(points),
       options_(options),
       d_(points.dim),
+      filters_hold_(points.scaled),
       orient_gamma_(geometry::gamma_bound(geometry::laplace_roundings(points.dim, 1))),
       lifted_gamma_(geometry::gamma_bound(
           geometry::laplace_roundings(points.dim + 1, geometry::lifted_entry_roundings(points.dim)))),
@@ -331,7 +338,6 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
   f0_ = points_.point(facet[0]);
   ranks_[0] = points_.rank[static_cast<std::size_t>(facet[0])];
   for (int k = 0; k < d; ++k) centroid_[static_cast<std::size_t>(k)] = 0.0;
-  const geometry::FloatingPointWatch watch;
   for (int i = 0; i < d; ++i) {
     const double* f = points_.point(facet[i]);
     for (int k = 0; k < d; ++k) centroid_[static_cast<std::size_t>(k)] += f[k] * inverse_d_;
@@ -351,7 +357,6 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
     if constexpr (D > 0) minors_.set_row_fixed<D + 1>(i - 1, row_.data());
     else minors_.set_row(i - 1, row_.data());
   }
-  facet_clean_ = points_.scaled && watch.clean();
   // O(x) = det[f_1 - f_0; ...; x - f_0]: Laplace along the last row over the spatial columns.
   const std::uint32_t spatial = bit(d) - 1;
   // Static exactness (as in geometry/predicates.cpp): with dyadic points, every spatial minor
@@ -360,7 +365,7 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
   // 2^52 unit^d. This decides points and kd-tree boxes lying exactly on the facet's hyperplane,
   // which integer grids have in every hull face.
   // The lifted minors likewise, with the lift column counting twice (its entries are squares).
-  orientation_exact_ = lifted_exact_ = points_.dyadic && facet_clean_;
+  orientation_exact_ = lifted_exact_ = points_.dyadic && filters_hold_;
   for (std::uint32_t mask = 1; (orientation_exact_ || lifted_exact_) && mask < bit(d + 1); ++mask) {
     const int size = __builtin_popcount(mask);
     if (size >= d) continue;  // the facet has d - 1 rows
@@ -410,7 +415,6 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
   ++counters_->candidates;
   const double* p = points_.point(id);
   rows_[static_cast<std::size_t>(d - 1)] = p;
-  const geometry::FloatingPointWatch watch;
   ranks_[static_cast<std::size_t>(d)] = points_.rank[static_cast<std::size_t>(id)];
   // row_ holds r_p (consider() computed it). Unrolled for fixed d, the test c == j folds
   // away, which the loops as written kept (with set_facet's loops above: callgrind, 5D 3 000
@@ -430,16 +434,16 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
   // The sphere through F and p is {x : I(p, x) / O(p) = 0}; I(p, x) / O(p) is the power of x,
   // so its centre is f0 - w_spatial / (2 w_lift) and it passes through f0. The box is the
   // sphere's bounding box, enlarged by the effect of the minors' error bounds on the centre.
-  candidate_clean_ = facet_clean_ && watch.clean();
   // w_j is a d-minor over all columns but j: d units, plus one for the lift column (j < d).
-  candidate_exact_ = lifted_exact_ && candidate_clean_;
+  candidate_exact_ = lifted_exact_;
   for (int j = 0; candidate_exact_ && j <= d; ++j)
     candidate_exact_ = w_abs_[static_cast<std::size_t>(j)] < exact_limits_[static_cast<std::size_t>(j < d ? d + 1 : d)];
   if (shell_ != nullptr) set_shell_form();
   const double gamma = lifted_gamma_;
   const double wd = w_[static_cast<std::size_t>(d)];
-  const double ewd = gamma * w_abs_[static_cast<std::size_t>(d)];
-  if (!candidate_clean_ || !(std::fabs(wd) > 2 * ewd) || !std::isfinite(wd)) {  // no trustworthy box
+  // The error bounds of w's entries: its rounding, gamma |w|, and what underflow adds.
+  const double ewd = gamma * w_abs_[static_cast<std::size_t>(d)] + geometry::kUnderflowError;
+  if (!filters_hold_ || !(std::fabs(wd) > 2 * ewd) || !std::isfinite(wd)) {  // no trustworthy box
     reset_box();
     return;
   }
@@ -450,7 +454,8 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
   const double minus_half_over_wd = -1 / (2 * wd), half_over_margin = 1 / (2 * (std::fabs(wd) - ewd));
   for (int k = 0; k < d; ++k) {
     const double dc = w_[static_cast<std::size_t>(k)] * minus_half_over_wd;
-    const double err = (gamma * w_abs_[static_cast<std::size_t>(k)] + 2 * std::fabs(dc) * ewd) * half_over_margin;
+    const double err = (gamma * w_abs_[static_cast<std::size_t>(k)] + geometry::kUnderflowError + 2 * std::fabs(dc) * ewd) *
+                       half_over_margin;
     centre_[static_cast<std::size_t>(k)] = f0_[k] + dc;
     radius2 += dc * dc;
     error += err;  // the 1-norm of the centre's error: at least its length, without a root
@@ -458,9 +463,11 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
   }
   const double radius = std::sqrt(radius2);
   // Twice the centre's error (the radius moves by at most as much), plus the roundings of
-  // computing the centre, the radius and the box bounds.
+  // computing the centre, the radius and the box bounds, and what underflow can take from the
+  // smallest of them (a radius below 2^-511 may lose its squares: at most sqrt(d) 2^-537; a
+  // ball needs a reach above 2^-400 anyway).
   const double reach = radius + 2 * error * (1 + 1e-6) +
-                       8 * (d + 4) * geometry::kUnitRoundoff * (magnitude + radius);
+                       8 * (d + 4) * geometry::kUnitRoundoff * (magnitude + radius) + 0x1p-500;
   if (!std::isfinite(reach)) {
     reset_box();
     return;
@@ -712,7 +719,7 @@ void SearchKernel<D>::scan_shell_leaf(std::int32_t leaf, std::int32_t end) {
 
 template <int D>
 int SearchKernel<D>::orientation_sign(double value, double abs_tree, double gamma) const {
-  const int s = facet_clean_ ? certified_sign_with(value, abs_tree, gamma) : 0;
+  const int s = filters_hold_ ? certified_sign_with(value, abs_tree, gamma) : 0;
   if (s != 0 || !orientation_exact_ || !(abs_tree < orient_exact_limit_)) return s;
   return value > 0 ? 1 : -1;  // exact: 0 counts as the closed side, like negative values
 }
@@ -743,7 +750,7 @@ bool SearchKernel<D>::beats_candidate(std::int32_t id) {
     v += w_[static_cast<std::size_t>(k)] * row_[static_cast<std::size_t>(k)];
     v_abs += w_abs_[static_cast<std::size_t>(k)] * std::fabs(row_[static_cast<std::size_t>(k)]);
   }
-  int s = candidate_clean_ ? certified_sign_with(v, v_abs, lifted_gamma_) : 0;
+  int s = filters_hold_ ? certified_sign_with(v, v_abs, lifted_gamma_) : 0;
   if (s == 0 && shell_form_) s = shell_sign(id);
   if (s == 0) {
     rows_[static_cast<std::size_t>(d)] = points_.point(id);
@@ -753,7 +760,7 @@ bool SearchKernel<D>::beats_candidate(std::int32_t id) {
     // (cospherical points, as in every cell of a grid), which only the perturbation breaks.
     if (candidate_exact_ && v_abs < exact_limits_[static_cast<std::size_t>(d + 2)])
       s = v != 0.0 ? (v > 0 ? 1 : -1) : sigma_ * geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data());
-    else if (candidate_clean_)  // the filter above was sound and failed: a near-tie, for GMP
+    else if (filters_hold_)  // the filter above was sound and failed: a near-tie, for GMP
       s = sigma_ * geometry::exact_lifted_sign_perturbed(frame, rows_.data(), ranks_.data());
     else
       s = sigma_ * geometry::lifted_sign_perturbed(frame, rows_.data(), ranks_.data());
@@ -844,7 +851,7 @@ unsigned SearchKernel<D>::certified_negative(const Pair* value, const Pair* abs_
 template <int D>
 unsigned SearchKernel<D>::boxes_maybe_open_side(const double* boxes) const {
   constexpr unsigned kAll = (1u << LeafBlocks::kLanes) - 1;
-  if (!facet_clean_) return kAll;
+  if (!filters_hold_) return kAll;
   // prune's sums: the largest sigma O over the box, at the corner that maximises each term,
   // and its absolute tree; certified_sign_with's test for -1.
   const int d = dim();
@@ -872,7 +879,7 @@ unsigned SearchKernel<D>::boxes_maybe_open_side(const double* boxes) const {
 template <int D>
 unsigned SearchKernel<D>::maybe_open_side(const double* lanes, int count) const {
   const unsigned all = (1u << count) - 1;
-  if (!facet_clean_) return all;  // on_open_side certifies nothing
+  if (!filters_hold_) return all;  // on_open_side certifies nothing
   // on_open_side's sums o = a . (x - f0) and o_abs = |a| . |x - f0|, in axis order, and
   // certified_sign_with's test for -1.
   const int d = dim();
@@ -1052,7 +1059,7 @@ bool SearchKernel<D>::prune(std::int32_t node) const {
   // (measured). So the closed side is pruned while there is no ball: before the first
   // candidate (the box is then unbounded: hull facets depend on it) or without a trustworthy
   // ball, or without ball queries at all (the paper's search).
-  if (!options_.prune_closed_side || !facet_clean_ || ball_) return false;
+  if (!options_.prune_closed_side || !filters_hold_ || ball_) return false;
   // The largest value of sigma O over the node's box, at the corner that maximises each term
   // (rounding is monotonic: a * dhi >= a * dlo in floating point too when a >= 0); the bound
   // factor covers a computed a of the wrong sign (box_orient_gamma_).
@@ -1075,7 +1082,7 @@ bool SearchKernel<D>::cone_on_closed_side(std::int32_t node, double box_abs) con
   // box_orient_gamma_ times the box's absolute tree covers (the box holds the points).
   const int d = dim();
   const double* cone = shell_->cone_of(node);
-  if (!(cone[d] > 0.0) || !facet_clean_) return false;
+  if (!(cone[d] > 0.0) || !filters_hold_) return false;
   const double norm = facet_on_shell_.norm;
   const double most = -least_on_cone(a_.data(), -1.0, norm, cone);
   const double value = facet_on_shell_.offset + (most > 0.0 ? most * cone[d + 3] : most * cone[d + 2]);

@@ -6,8 +6,10 @@
 // every subtraction turned into an addition, and gamma(n) = n u / (1 - n u), u = 2^-53
 // (Higham, "Accuracy and Stability of Numerical Algorithms", 2nd ed., section 3.1).
 // P is itself computed in floating point; its own relative error is below gamma(n) too, which
-// the safety factor below absorbs. Underflow voids the model: the filters treat tiny
-// magnitudes as undecided and let the exact code decide.
+// the safety factor below absorbs. Underflow adds to that an absolute error: each product that
+// underflows is off by up to 2^-1075, times whatever multiplies it later. The filters treat
+// tiny magnitudes of P as undecided and let the exact code decide; above that floor the
+// safety factor's 1e-6 absorbs the absolute error wherever it is bounded (kUnderflowError).
 #pragma once
 
 #include <cfenv>
@@ -25,7 +27,17 @@ namespace drange::geometry {
 
 constexpr double kUnitRoundoff = 0x1p-53;
 // Below this magnitude of P a filter does not decide (denormals and underflow are possible).
-constexpr double kFilterUnderflow = 0x1p-900;
+// Above it, 1e-6 gamma P > 2^-20 2^-53 2^-800 = 2^-873, far above kUnderflowError.
+constexpr double kFilterUnderflow = 0x1p-800;
+// A bound on the absolute error that underflow adds to any value the search computes from
+// points scaled below 1 in magnitude (PointStore::scaled; d <= 11): the minors of the facet's
+// lifted rows, the candidate's w and I(p, x) (delaunay/facet_search.cpp). The entries of the
+// lifted rows are below 2^6, so the (d-1)-minors are below 10! 2^60 < 2^82, w below 2^92 and
+// I below 2^102; an underflowing product is multiplied afterwards by at most 2^94 (the
+// cofactor of the deepest lift entry's square), and the expanded expression of I has fewer
+// than 2^35 products: 2^35 2^-1075 2^94 = 2^-946. Nothing overflows there, and so nothing is
+// invalid either: the search reads no floating-point flag.
+constexpr double kUnderflowError = 0x1p-940;
 // Above it, overflow is possible in the evaluation.
 constexpr double kFilterOverflow = 0x1p+900;
 
