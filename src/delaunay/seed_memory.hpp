@@ -16,6 +16,8 @@
 #include <cstdint>
 #include <memory>
 
+#include "util/huge_pages.hpp"
+
 namespace drange::engine {
 
 class SeedMemory {
@@ -24,6 +26,7 @@ class SeedMemory {
 
   explicit SeedMemory(std::int32_t points)
       : size_(static_cast<std::size_t>(points) * kSeeds), seeds_(new std::atomic<std::int32_t>[size_]) {
+    util::advise_huge_pages(seeds_.get(), size_ * sizeof(std::atomic<std::int32_t>));
     for (std::size_t i = 0; i < size_; ++i) seeds_[i].store(-1, std::memory_order_relaxed);
   }
 

@@ -26,6 +26,7 @@
 #include "io/parse_number.hpp"
 #include "io/read_text.hpp"
 #include "io/text_lines.hpp"
+#include "util/huge_pages.hpp"
 
 namespace drange {
 namespace {
@@ -181,6 +182,7 @@ void reserve_coordinates(std::vector<double>& coords, std::size_t points_claimed
                          const io::LineScanner& scanner) {
   const std::size_t points = std::min(points_claimed, scanner.remaining_lines_bound());
   if (points <= SIZE_MAX / dim) coords.reserve(points * dim);
+  util::advise_huge_pages(coords.data(), coords.capacity() * sizeof(double));
 }
 
 PointCloud parse_qhull(io::LineScanner& scanner, const Layout& layout, const std::string& name) {

@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 
 #include "drange/errors.hpp"
+#include "util/huge_pages.hpp"
 
 namespace drange::io {
 namespace {
@@ -44,6 +45,7 @@ std::string read_whole_file(const std::string& path) {
   struct stat info {};
   if (fstat(fileno(file.get()), &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
     text.reserve(static_cast<std::size_t>(info.st_size) + kChunk);
+    util::advise_huge_pages(text.data(), text.capacity());
   }
   std::size_t used = 0;
   for (;;) {

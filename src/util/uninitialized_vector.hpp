@@ -5,7 +5,8 @@
 // pages already, so the memory is written twice, and by the calling thread alone, before the
 // threads that fill it start (prepare_points.cpp: 24 MB of items for 1M points in 2D, 8 ms).
 // Here an element of a trivial type is left as the memory holds it: each page is touched
-// first by the thread that fills it.
+// first by the thread that fills it. A large array is also backed by 2 MiB pages where the
+// system allows (huge_pages.hpp).
 #pragma once
 
 #include <memory>
@@ -13,6 +14,8 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#include "util/huge_pages.hpp"
 
 namespace drange::util {
 
@@ -25,6 +28,12 @@ struct DefaultInitAllocator : std::allocator<T> {
   DefaultInitAllocator() = default;
   template <class U>
   DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept {}
+
+  T* allocate(std::size_t n) {
+    T* p = std::allocator<T>::allocate(n);
+    advise_huge_pages(p, n * sizeof(T));
+    return p;
+  }
 
   template <class U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
