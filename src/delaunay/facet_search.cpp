@@ -45,6 +45,11 @@ inline Pair load_pair(const double* x) {
   std::memcpy(&v, x, sizeof v);
   return v;
 }
+// An upper bound of |v| from its computed sum of d squares: the roundings, and what underflow
+// may take from the squares (each of them below 2^-1074: the root of their sum below 2^-530).
+inline double upper_norm(double sum_of_squares, int d) {
+  return std::sqrt(sum_of_squares) * (1 + geometry::gamma_bound(d + 2)) + 0x1p-530;
+}
 // The lanes whose distance is not above reach2, as a bit mask.
 inline unsigned not_above(const Pair* distance2, double reach2) {
   const Pair reach = {reach2, reach2};
@@ -505,7 +510,7 @@ void SearchKernel<D>::set_shell_form() {
   shell_eta_term_ = 1.01 * (std::fabs(shell_lift_) + shell_lift_err_) * shell_->eta;
   double b2 = 0.0;
   for (int k = 0; k < d; ++k) b2 += shell_b_[static_cast<std::size_t>(k)] * shell_b_[static_cast<std::size_t>(k)];
-  shell_b_norm_ = std::sqrt(b2) * (1 + geometry::gamma_bound(d + 2));
+  shell_b_norm_ = upper_norm(b2, d);
 }
 
 template <int D>
@@ -1104,7 +1109,7 @@ void SearchKernel<D>::set_facet_on_shell() {
     offset += a * t;
     offset_abs += std::fabs(a) * std::fabs(t);
   }
-  facet_on_shell_ = {std::sqrt(norm2) * (1 + geometry::gamma_bound(d + 2)), offset, offset_abs};
+  facet_on_shell_ = {upper_norm(norm2, d), offset, offset_abs};
 }
 
 template <int D>
