@@ -73,8 +73,10 @@ inline int certified_sign(double value, double abs_tree, int roundings) {
 // exactly (an underflow flag is raised by every tiny inexact result, even one that ends up
 // multiplied by a huge entry). The library is compiled with -frounding-math so that the
 // compiler keeps floating-point operations between the two calls.
-// On x86-64 the arithmetic is SSE2, whose flags live in MXCSR: reading it directly costs a few
-// cycles, where glibc's fenv functions also save and restore the x87 state. The empty asm
+// On x86-64 the arithmetic is SSE2, whose flags live in MXCSR: reading it directly costs less
+// than glibc's fenv functions, which also save and restore the x87 state, but a read still
+// waits for the arithmetic before it; the facet search, which would read it several times per
+// facet, does without (kUnderflowError; facet_search.cpp, filters_hold_). The empty asm
 // statements keep the compiler from moving memory accesses (the watched results) across.
 #if defined(__x86_64__) && defined(__SSE2__)
 class FloatingPointWatch {
