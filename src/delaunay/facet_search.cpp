@@ -46,7 +46,8 @@ inline Pair load_pair(const double* x) {
   return v;
 }
 // An upper bound of |v| from its computed sum of d squares: the roundings, and what underflow
-// may take from the squares (each of them below 2^-1074: the root of their sum below 2^-530).
+// may take from the squares (each loses less than 2^-1074, so the root of all they lose is
+// below 2^-530).
 inline double upper_norm(double sum_of_squares, int d) {
   return std::sqrt(sum_of_squares) * (1 + geometry::gamma_bound(d + 2)) + 0x1p-530;
 }

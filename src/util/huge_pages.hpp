@@ -6,9 +6,10 @@
 // 20 000 (63 000), and time_kdtree 15% less (2D 1M, median of 6 interleaved pairs). Not for
 // the simplices and neighbours: the kernel zeroes each 2 MiB page at once, in the middle of
 // the search, and 3D 1M searched 5% to 6% slower with them (5 pairs, both orders). Linux backs
-// memory with them where a program asks (madvise, the default of /sys/kernel/mm/
-// transparent_hugepage/enabled on Debian) or everywhere ("always"). The advice is a hint: where
-// it is refused or unknown, nothing changes but the count of faults.
+// memory with them where a program asks when /sys/kernel/mm/transparent_hugepage/enabled says
+// "madvise" (this machine's setting), everywhere when it says "always", and never when it says
+// "never". The advice is a hint: where it is refused or unknown, nothing changes but the count
+// of faults.
 #pragma once
 
 #include <cstddef>
