@@ -59,6 +59,15 @@ PointCloud sphere(std::size_t n, int d, std::uint64_t seed, double radius = 1.0,
   return points;
 }
 
+// The 2^d corners of the cube [-half, half]^d added to `points`: what users add to bound the
+// Voronoi cells of points on a sphere. Far from the sphere, they pull its least-squares fit off.
+PointCloud with_cube_corners(PointCloud points, double half) {
+  const int d = points.dim;
+  for (int corner = 0; corner < (1 << d); ++corner)
+    for (int k = 0; k < d; ++k) points.coords.push_back((corner >> k) & 1 ? half : -half);
+  return points;
+}
+
 TEST(SphereShell, BuiltForPointsNearASphereOnly) {
   for (int d : {2, 3, 4, 5}) {
     EXPECT_TRUE(store_of(sphere(3000, d, 7)).shell.active()) << "d=" << d;
@@ -74,6 +83,17 @@ TEST(SphereShell, BuiltForPointsNearASphereOnly) {
   const auto store = store_of(with_centre);
   ASSERT_TRUE(store.shell.active());
   for (double c : store.shell.centre) EXPECT_LT(std::fabs(c), 1e-12);
+  // The corners of a bounding cube: the least-squares fit of all the points is off by more
+  // than the points' tolerance, and a fit to a few points drawn at random finds the sphere.
+  for (int d : {2, 3, 4}) {
+    const auto boxed = store_of(with_cube_corners(sphere(3000, d, 12), 1.5));
+    ASSERT_TRUE(boxed.shell.active()) << "d=" << d;
+    for (double c : boxed.shell.centre) EXPECT_LT(std::fabs(c), 1e-12) << "d=" << d;
+    // The sphere's points (scaled by a power of two, as every input) lie on the fitted sphere.
+    const auto on_sphere = std::count_if(boxed.shell.offset.begin(), boxed.shell.offset.end(),
+                                         [&](double s) { return std::fabs(s) <= 1e-12 * boxed.shell.rho; });
+    EXPECT_EQ(on_sphere, 3000) << "d=" << d;
+  }
 }
 
 TEST(SphereShell, OffsetsAndNodeRangesBoundTheExactOffsets) {
@@ -353,6 +373,8 @@ TEST(SphereShell, SameValidTriangulationWithAndWithoutIt) {
     c.coords.insert(c.coords.end(), {0.0, 0.0, 0.0});
     cases.emplace_back("sphere and centre", c);
   }
+  cases.emplace_back("sphere and its bounding cube's corners", with_cube_corners(sphere(1500, 3, 32), 1.0));
+  cases.emplace_back("circle and its bounding square's corners", with_cube_corners(sphere(2000, 2, 33), 1.0));
   {
     // Every integer point of the circle x^2 + y^2 = 5^4 13^2 (exactly cocircular: ties that
     // only the perturbation breaks).
