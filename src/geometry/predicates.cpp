@@ -16,6 +16,7 @@
 #include "geometry/exact.hpp"
 #include "geometry/exact_matrix.hpp"
 #include "geometry/minors.hpp"
+#include "geometry/refined_sign.hpp"
 
 namespace drange::geometry {
 namespace {
@@ -149,7 +150,10 @@ void integer_lifted_rows(const Frame& f, const IntegerScale& scale, const double
   }
 }
 
+// The exact sign: proved by the double-double evaluation when it can be (refined_sign.hpp),
+// else computed with GMP, which alone counts as an exact evaluation.
 int exact_lifted_sign(const Frame& f, const double* const* points) {
+  if (const std::optional<int> s = refined_lifted_sign(f, points)) return *s;
   ++exact_count;
   const int n = f.k + 1;
   const IntegerScale scale = scale_of(f.dim, f.base, points, n);

@@ -2,7 +2,9 @@
 //
 // Every predicate returns the exact sign of a determinant of the input doubles: a fast
 // floating-point evaluation whose error bound is derived (see error_bound.hpp), then, only when
-// that bound cannot decide, an exact evaluation with GMP integers. A zero never reaches the
+// that bound cannot decide, an exact evaluation with GMP integers. The lifted determinant has
+// a stage between the two, up to 4D: the same evaluation in double-double arithmetic
+// (refined_sign.hpp), which decides the near-ties of points within rounding of a sphere. A zero never reaches the
 // algorithm where it would matter: `lifted_sign_perturbed` breaks every tie by a symbolic
 // perturbation of the lifted coordinate (Edelsbrunner and Muecke's Simulation of Simplicity,
 // in the form Devillers and Teillaud give for Delaunay triangulations).
@@ -44,9 +46,10 @@ int lifted_sign_perturbed(const Frame& frame, const double* const* points, const
 // lifted_sign_perturbed for a caller that has proved the unperturbed determinant exactly zero
 // (facet_search.cpp does, on dyadic points): the perturbation alone decides.
 int lifted_tie_sign(const Frame& frame, const double* const* points, const std::int64_t* ranks);
-// lifted_sign_perturbed without the floating-point filter, for a caller whose own filter of
-// the same determinant just failed (facet_search.cpp): near-ties, which the generic filter
-// would not decide either (2 000 points on a sphere: not once in 1.26M evaluations).
+// lifted_sign_perturbed without the double filter, for a caller whose own filter of the same
+// determinant just failed (facet_search.cpp): near-ties, which the generic filter would not
+// decide either (2 000 points on a sphere: not once in 1.26M evaluations). The double-double
+// stage and GMP decide.
 int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points, const std::int64_t* ranks);
 
 // The lifted determinant det[r_1; ...; r_k; r_x] (frame.k == frame.dim, rows relative to

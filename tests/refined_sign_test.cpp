@@ -1,0 +1,161 @@
+// tests/refined_sign_test.cpp: the double-double stage of the lifted predicate
+// (geometry/refined_sign.hpp) against the rational reference (oracle.hpp).
+//
+// It may leave a case undecided, never decide one wrongly. And it must decide what it is for:
+// points within rounding of a sphere, and points moved off one by far less than the double
+// filter resolves. Exact ties are left to GMP.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/double_double.hpp"
+#include "geometry/predicates.hpp"
+#include "geometry/refined_sign.hpp"
+#include "oracle.hpp"
+
+namespace drange::test {
+namespace {
+
+using geometry::Frame;
+
+// A point of the sphere of `radius` about `centre` (each coordinate), in direction of d random
+// normal-ish values, then its distance from the centre scaled by (1 + nudge).
+std::vector<double> on_sphere(TestRandom& random, int d, double centre, double radius, double nudge) {
+  std::vector<double> v(static_cast<std::size_t>(d));
+  double norm2 = 0.0;
+  for (double& x : v) {
+    x = 2 * random.uniform() - 1;
+    norm2 += x * x;
+  }
+  const double scale = radius * (1 + nudge) / std::sqrt(norm2);
+  for (double& x : v) x = centre + scale * x;
+  return v;
+}
+
+struct Tally {
+  int decided = 0, cases = 0;
+};
+
+// d + 2 points, the last one nudged: the refined sign, when it decides, is the exact sign.
+void check_case(int d, TestRandom& random, double centre, double radius, double nudge, Tally& tally) {
+  std::vector<std::vector<double>> points;
+  for (int i = 0; i < d + 1; ++i) points.push_back(on_sphere(random, d, centre, radius, 0.0));
+  points.push_back(on_sphere(random, d, centre, radius, nudge));
+  std::vector<const double*> rows;
+  for (int i = 1; i < d + 2; ++i) rows.push_back(points[static_cast<std::size_t>(i)].data());
+  const Frame frame{d, d, nullptr, points[0].data()};
+  const int exact = reference_lifted_sign(d, points[0].data(), rows);
+  const std::optional<int> refined = geometry::refined_lifted_sign(frame, rows.data());
+  ++tally.cases;
+  if (refined) {
+    ++tally.decided;
+    ASSERT_EQ(*refined, exact) << "d=" << d << " centre=" << centre << " radius=" << radius << " nudge=" << nudge;
+  }
+  // The predicate itself, through whichever stage decides.
+  ASSERT_EQ(geometry::lifted_sign(frame, rows.data()), exact) << "d=" << d << " nudge=" << nudge;
+}
+
+TEST(RefinedSign, DoubleDoubleOperationsAreWithinTheirBound) {
+  TestRandom random(1);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const geometry::DoubleDouble x = geometry::add({random.uniform() - 0.5, 0.0}, {std::ldexp(random.uniform(), -60), 0.0});
+    const geometry::DoubleDouble y = geometry::difference(random.uniform() * 3, std::ldexp(random.uniform(), -57));
+    const mpq_class qx = mpq_class(x.hi) + mpq_class(x.lo), qy = mpq_class(y.hi) + mpq_class(y.lo);
+    for (const auto& [result, exact] : {std::pair{geometry::add(x, y), mpq_class(qx + qy)}, std::pair{geometry::multiply(x, y), mpq_class(qx * qy)}}) {
+      const mpq_class error = abs(mpq_class(result.hi) + mpq_class(result.lo) - exact);
+      ASSERT_LE(error, abs(exact) * mpq_class(geometry::kDoubleDoubleRoundoff)) << "trial " << trial;
+    }
+  }
+}
+
+TEST(RefinedSign, AgreesWithTheRationalReferenceOnNearSphericalPoints) {
+  // Random points of a sphere, rounded to doubles: within about 2^-53 of it, where the double
+  // filter cannot decide and this stage must. Nudged by 2^-30 and 2^-45, where either may.
+  for (int d = 2; d <= 4; ++d) {
+    for (const double centre : {0.0, 0.3, 1e6}) {
+      for (const double nudge : {0.0, 0x1p-30, -0x1p-45}) {
+        SCOPED_TRACE("d=" + std::to_string(d) + " centre=" + std::to_string(centre) + " nudge=" + std::to_string(nudge));
+        TestRandom random(static_cast<std::uint64_t>(d * 1000) + static_cast<std::uint64_t>(centre) + (nudge != 0.0));
+        Tally tally;
+        for (int trial = 0; trial < 200; ++trial) check_case(d, random, centre, 1.0, nudge, tally);
+        EXPECT_GE(tally.decided, tally.cases * 9 / 10);
+      }
+    }
+  }
+}
+
+TEST(RefinedSign, AgreesOnExactlyCosphericalPointsMovedByAFewUlps) {
+  // Integer points of a circle, a sphere and a 3-sphere, scaled by 2^20 and moved to an
+  // offset (all exact), with one coordinate of the last point moved by k units in the last
+  // place (its largest one): the determinant is then about 2^-50 of its terms, or exactly 0 for
+  // k = 0.
+  const std::vector<std::vector<std::vector<double>>> sets = {
+      {{3, 4}, {-4, 3}, {0, -5}, {5, 0}},
+      {{1, 2, 2}, {2, -1, 2}, {-2, 2, 1}, {3, 0, 0}, {0, -3, 0}},
+      {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}, {-1, 0, 0, 0}, {0, -1, 0, 0}},
+  };
+  for (const auto& set : sets) {
+    const int d = static_cast<int>(set[0].size());
+    for (const double offset : {0.0, 1024.0, -0x1p30}) {
+      for (const int k : {0, 1, -1, 3, -1000}) {
+        std::vector<std::vector<double>> points = set;
+        for (auto& p : points)
+          for (double& x : p) x = x * 0x1p20 + offset;
+        // A nonzero coordinate: one ulp from 0 is a denormal, whose square underflows.
+        double& moved = *std::max_element(points.back().begin(), points.back().end(),
+                                          [](double a, double b) { return std::fabs(a) < std::fabs(b); });
+        for (int step = 0; step < std::abs(k); ++step) moved = std::nextafter(moved, k > 0 ? INFINITY : -INFINITY);
+        std::vector<const double*> rows;
+        for (std::size_t i = 1; i < points.size(); ++i) rows.push_back(points[i].data());
+        const Frame frame{d, d, nullptr, points[0].data()};
+        const int exact = reference_lifted_sign(d, points[0].data(), rows);
+        const std::optional<int> refined = geometry::refined_lifted_sign(frame, rows.data());
+        SCOPED_TRACE("d=" + std::to_string(d) + " offset=" + std::to_string(offset) + " k=" + std::to_string(k));
+        if (k == 0) {
+          EXPECT_EQ(exact, 0);
+          EXPECT_FALSE(refined);
+        } else {
+          EXPECT_NE(exact, 0);
+          ASSERT_TRUE(refined);
+          EXPECT_EQ(*refined, exact);
+        }
+        EXPECT_EQ(geometry::lifted_sign(frame, rows.data()), exact);
+      }
+    }
+  }
+}
+
+TEST(RefinedSign, LeavesExactTiesUndecided) {
+  // Integer points on the circle x^2 + y^2 = 25 and on the sphere of radius 3 through
+  // (1, 2, 2): exactly cospherical, so the determinant is 0 and only GMP may say so.
+  const std::vector<std::vector<double>> circle = {{3, 4}, {-4, 3}, {0, -5}, {5, 0}};
+  std::vector<const double*> rows = {circle[1].data(), circle[2].data(), circle[3].data()};
+  EXPECT_FALSE(geometry::refined_lifted_sign(Frame{2, 2, nullptr, circle[0].data()}, rows.data()));
+  EXPECT_EQ(geometry::lifted_sign(Frame{2, 2, nullptr, circle[0].data()}, rows.data()), 0);
+  const std::vector<std::vector<double>> sphere = {{1, 2, 2}, {2, -1, 2}, {-2, 2, 1}, {3, 0, 0}, {0, -3, 0}};
+  rows = {sphere[1].data(), sphere[2].data(), sphere[3].data(), sphere[4].data()};
+  EXPECT_FALSE(geometry::refined_lifted_sign(Frame{3, 3, nullptr, sphere[0].data()}, rows.data()));
+  EXPECT_EQ(geometry::lifted_sign(Frame{3, 3, nullptr, sphere[0].data()}, rows.data()), 0);
+}
+
+TEST(RefinedSign, UndecidedWhenOperationsUnderflowOrTheFrameIsTooLarge) {
+  // A unit circle scaled to 1e-160: the squares underflow, and the bound no longer holds.
+  TestRandom random(5);
+  Tally tally;
+  for (int trial = 0; trial < 50; ++trial) check_case(2, random, 0.0, 1e-160, 0x1p-70, tally);
+  EXPECT_EQ(tally.decided, 0);
+  // 5D: six rows, beyond kRefinedMaxRows.
+  std::vector<std::vector<double>> points;
+  for (int i = 0; i < 7; ++i) points.push_back(on_sphere(random, 5, 0.0, 1.0, i == 6 ? 0x1p-70 : 0.0));
+  std::vector<const double*> rows;
+  for (int i = 1; i < 7; ++i) rows.push_back(points[static_cast<std::size_t>(i)].data());
+  EXPECT_FALSE(geometry::refined_lifted_sign(Frame{5, 5, nullptr, points[0].data()}, rows.data()));
+}
+
+}  // namespace
+}  // namespace drange::test
