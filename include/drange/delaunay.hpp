@@ -98,7 +98,7 @@ struct Statistics {
   std::size_t search_calls = 0;      // kd-tree nodes entered by all searches (the paper's "Calls" numerator)
   std::size_t points_tested = 0;     // points inside a query box (or ball), tested against the candidate sphere
   std::size_t candidates = 0;        // times a search's candidate point was set or improved
-  std::size_t exact_fallbacks = 0;   // decisions the floating-point filter could not take
+  std::size_t exact_fallbacks = 0;   // decisions the floating-point filters could not take (made with GMP)
   std::size_t max_open_facets = 0;   // the largest frontier held in the facet table
   std::size_t threads = 1;           // threads used (Options::threads resolved)
   std::size_t wasted_searches = 0;   // searches run ahead by a thread for a facet closed before its turn;

@@ -140,8 +140,9 @@ bool mostly_near(const double* coords, int dim, const std::vector<std::int32_t>&
 
 // A sphere that most of `sample` lies near. First the least-squares fit of the whole sample;
 // but a few points far from the sphere pull that fit off by more than kNear (the 8 corners of
-// the bounding box of 32 000 points on a sphere in 3D move it by 0.14% of rho), and then no
-// point is near it. So then spheres fitted to dim + 2 sample points drawn at random are tried:
+// the bounding box of 32 000 points on a sphere in 3D, by about their residuals over n: 0.14%
+// of rho), and then no point is near it. So then spheres fitted to dim + 2 sample points drawn
+// at random are tried:
 // with 9 in 10 of the points near one sphere, each draw is all near it with odds of at least
 // 0.9^10 = 0.35 up to d = 8, and kDraws draws all fail with odds below 10^-11. The draws are
 // the same for every run (a fixed seed): the shell changes the work, never the result.

@@ -1,0 +1,65 @@
+#!/usr/bin/python3
+"""bench/degenerate_families.py: writes the eighteenth round's probe inputs (bench/RESULTS.md,
+"The eighteenth round"): 20 000 points each on curved sets that are not one input sphere,
+where the direct search is weak, in Qhull's format, into a directory.
+
+    bench/degenerate_families.py DIR
+
+Then, per file: drange delaunay DIR/NAME.txt -o /dev/null --stats --threads 1, and
+build-bench/bench/drange_bench_run --peer cgal3 (cgal2 in 2D, qhull) --input DIR/NAME.txt.
+The points come from Python's random module with a fixed seed: the same files on every run.
+"""
+import math
+import os
+import random
+import sys
+
+N = 20000
+
+
+def on_sphere(rng, d):
+    v = [rng.gauss(0, 1) for _ in range(d)]
+    s = math.sqrt(sum(x * x for x in v))
+    return [x / s for x in v]
+
+
+def families(rng):
+    yield "two_circles", [[x * r for x in on_sphere(rng, 2)] for r in (1, 0.5) for _ in range(N // 2)]
+    yield "two_spheres3", [[x * r for x in on_sphere(rng, 3)] for r in (1, 0.5) for _ in range(N // 2)]
+    for d in (2, 3):
+        centres = [[rng.uniform(-1, 1) for _ in range(d)] for _ in range(20)]
+        yield f"bubbles{d}", [[c[k] + 0.05 * x[k] for k in range(d)] for c in centres
+                              for x in (on_sphere(rng, d) for _ in range(N // 20))]
+    yield "cylinder", [[math.cos(t), math.sin(t), rng.uniform(-1, 1)]
+                       for t in (rng.uniform(0, 2 * math.pi) for _ in range(N))]
+    yield "cylinder_rings", [[math.cos(2 * math.pi * j / 200), math.sin(2 * math.pi * j / 200), i / 50.0]
+                             for i in range(100) for j in range(200)]
+    yield "circle_in_3d", [on_sphere(rng, 2) + [0.0] for _ in range(N)] + [[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]]
+    yield "hemisphere", [[x[0], x[1], abs(x[2])] for x in (on_sphere(rng, 3) for _ in range(N))]
+    torus = []
+    for _ in range(N):
+        a, b = rng.uniform(0, 2 * math.pi), rng.uniform(0, 2 * math.pi)
+        torus.append([(1 + 0.3 * math.cos(b)) * math.cos(a), (1 + 0.3 * math.cos(b)) * math.sin(a), 0.3 * math.sin(b)])
+    yield "torus", torus
+    yield "sphere_in_ball", ([on_sphere(rng, 3) for _ in range(N * 4 // 5)] +
+                             [[x * rng.random() ** (1 / 3) for x in on_sphere(rng, 3)] for _ in range(N // 5)])
+    yield "polar_grid", [[r / 50 * math.cos(2 * math.pi * j / 400), r / 50 * math.sin(2 * math.pi * j / 400)]
+                         for r in range(1, 51) for j in range(400)]
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    directory = sys.argv[1]
+    os.makedirs(directory, exist_ok=True)
+    rng = random.Random(5)
+    for name, points in families(rng):
+        with open(os.path.join(directory, name + ".txt"), "w") as out:
+            out.write(f"{len(points[0])}\n{len(points)}\n")
+            for p in points:
+                out.write(" ".join(repr(x) for x in p) + "\n")
+        print(name, len(points))
+
+
+if __name__ == "__main__":
+    main()
