@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 
+#include "geometry/double_double.hpp"
 #include "geometry/error_bound.hpp"
 #include "spatial/kdtree.hpp"
 
@@ -117,12 +118,6 @@ std::vector<std::int32_t> near(const double* coords, int dim, const std::vector<
   return kept;
 }
 
-// a + b - s exactly, for s = fl(a + b) (Knuth's two-sum).
-double two_sum_error(double a, double b, double s) {
-  const double b_part = s - a;
-  return (a - (s - b_part)) + (b - b_part);
-}
-
 bool mostly(std::size_t part, std::size_t whole) { return static_cast<double>(part) >= kInlierShare * static_cast<double>(whole); }
 
 // Whether most of `ids` lie near the sphere; stops counting once too many are off it, so that
@@ -175,13 +170,13 @@ double sphere_offset(const double* x, const double* g, int dim, double rho, doub
   // offset_error(dim) * M exceeds. The final hi + lo rounds by u |result|.
   double hi = -rho, lo = 0.0, total = 0.0;
   for (int k = 0; k < dim; ++k) {
-    const double h = x[k] - g[k];
-    const double l = two_sum_error(x[k], -g[k], h);
+    const geometry::DoubleDouble y = geometry::two_sum(x[k], -g[k]);
+    const double h = y.hi, l = y.lo;
     const double p = h * h;
     const double q = std::fma(h, h, -p);
-    const double sum = hi + p;
-    lo += two_sum_error(hi, p, sum);
-    hi = sum;
+    const geometry::DoubleDouble sum = geometry::two_sum(hi, p);
+    lo += sum.lo;
+    hi = sum.hi;
     lo += q;
     lo += 2 * h * l;
     total += p;

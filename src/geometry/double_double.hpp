@@ -23,12 +23,14 @@ struct DoubleDouble {
   double hi = 0.0, lo = 0.0;
 };
 
-namespace double_double_detail {
+// a + b = hi + lo exactly, hi = fl(a + b) (Knuth's two-sum).
 inline DoubleDouble two_sum(double a, double b) {
   const double s = a + b;
   const double b_part = s - a;
   return {s, (a - (s - b_part)) + (b - b_part)};
 }
+
+namespace double_double_detail {
 inline DoubleDouble fast_two_sum(double a, double b) {
   const double s = a + b;
   return {s, b - (s - a)};
@@ -49,7 +51,7 @@ inline DoubleDouble two_product(double a, double b) {
 }  // namespace double_double_detail
 
 // x - y of two doubles, exactly.
-inline DoubleDouble difference(double x, double y) { return double_double_detail::two_sum(x, -y); }
+inline DoubleDouble difference(double x, double y) { return two_sum(x, -y); }
 
 inline DoubleDouble negate(DoubleDouble x) { return {-x.hi, -x.lo}; }
 
