@@ -107,14 +107,17 @@ double distance2(const double* x, const std::vector<double>& g) {
   return t;
 }
 
+bool is_near(const double* coords, int dim, std::int32_t id, const Sphere& sphere) {
+  return std::fabs(distance2(coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim), sphere.centre) - sphere.radius2) <=
+         kNear * sphere.radius2;
+}
+
 // The ids among `ids` near the sphere.
 std::vector<std::int32_t> near(const double* coords, int dim, const std::vector<std::int32_t>& ids, const Sphere& sphere) {
   std::vector<std::int32_t> kept;
   kept.reserve(ids.size());
   for (std::int32_t id : ids)
-    if (std::fabs(distance2(coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim), sphere.centre) - sphere.radius2) <=
-        kNear * sphere.radius2)
-      kept.push_back(id);
+    if (is_near(coords, dim, id, sphere)) kept.push_back(id);
   return kept;
 }
 
@@ -126,10 +129,7 @@ bool mostly_near(const double* coords, int dim, const std::vector<std::int32_t>&
   const auto allowed = static_cast<std::size_t>((1.0 - kInlierShare) * static_cast<double>(ids.size()));
   std::size_t off = 0;
   for (std::int32_t id : ids)
-    if (!(std::fabs(distance2(coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim), sphere.centre) - sphere.radius2) <=
-          kNear * sphere.radius2) &&
-        ++off > allowed)
-      return false;
+    if (!is_near(coords, dim, id, sphere) && ++off > allowed) return false;
   return true;
 }
 
@@ -137,10 +137,10 @@ bool mostly_near(const double* coords, int dim, const std::vector<std::int32_t>&
 // but a few points far from the sphere pull that fit off by more than kNear (the 8 corners of
 // the bounding box of 32 000 points on a sphere in 3D, by about their residuals over n: 0.14%
 // of rho), and then no point is near it. So then spheres fitted to dim + 2 sample points drawn
-// at random are tried:
-// with 9 in 10 of the points near one sphere, each draw is all near it with odds of at least
-// 0.9^10 = 0.35 up to d = 8, and kDraws draws all fail with odds below 10^-11. The draws are
-// the same for every run (a fixed seed): the shell changes the work, never the result.
+// at random are tried: with 9 in 10 of the points near one sphere, each draw is all near it
+// with odds of at least 0.9^10 = 0.35 up to d = 8, and kDraws draws all fail with odds below
+// 10^-11. The draws are the same for every run (a fixed seed): the shell changes the work,
+// never the result.
 constexpr int kDraws = 64;
 bool sphere_of_most(const double* coords, int dim, const std::vector<std::int32_t>& sample, Sphere& sphere) {
   if (fit(coords, dim, sample, sphere) && mostly_near(coords, dim, sample, sphere)) return true;

@@ -59,7 +59,7 @@ inline DoubleDouble add(DoubleDouble x, DoubleDouble y) {
   using namespace double_double_detail;
   const DoubleDouble s = two_sum(x.hi, y.hi);
   const DoubleDouble t = two_sum(x.lo, y.lo);
-  DoubleDouble v = fast_two_sum(s.hi, s.lo + t.hi);
+  const DoubleDouble v = fast_two_sum(s.hi, s.lo + t.hi);
   return fast_two_sum(v.hi, v.lo + t.lo);
 }
 
