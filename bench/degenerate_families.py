@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""bench/degenerate_families.py: writes the eighteenth round's probe inputs (bench/RESULTS.md,
-"The eighteenth round"): 20 000 points each on curved sets that are not one input sphere,
-where the direct search is weak, in Qhull's format, into a directory.
+"""bench/degenerate_families.py: writes the eighteenth and nineteenth rounds' probe inputs
+(bench/RESULTS.md, "The eighteenth round", "The nineteenth round"): 20 000 points each (5 000
+for two_spheres4) on curved sets that are not one input sphere, where the direct search is
+weak, in Qhull's format, into a directory.
 
     bench/degenerate_families.py DIR
 
@@ -43,6 +44,16 @@ def families(rng):
     yield "torus", torus
     yield "sphere_in_ball", ([on_sphere(rng, 3) for _ in range(N * 4 // 5)] +
                              [[x * rng.random() ** (1 / 3) for x in on_sphere(rng, 3)] for _ in range(N // 5)])
+    # The nineteenth round's concentric spheres: five in 3D, two in 4D, and the eight layers of
+    # a spherical grid (the same 2 500 Fibonacci points at each radius, as in Earth models).
+    yield "five_spheres3", [[x * r for x in on_sphere(rng, 3)] for r in (1, 0.8, 0.6, 0.4, 0.2) for _ in range(N // 5)]
+    yield "two_spheres4", [[x * r for x in on_sphere(rng, 4)] for r in (1, 0.5) for _ in range(N // 8)]
+    fibonacci = []
+    for i in range(N // 8):
+        z = 1 - 2 * (i + 0.5) / (N // 8)
+        angle = math.pi * (3 - math.sqrt(5)) * i
+        fibonacci.append([math.sqrt(1 - z * z) * math.cos(angle), math.sqrt(1 - z * z) * math.sin(angle), z])
+    yield "layers3", [[x * (6371 - 300 * k) for x in p] for k in range(8) for p in fibonacci]
     yield "polar_grid", [[r / 50 * math.cos(2 * math.pi * j / 400), r / 50 * math.sin(2 * math.pi * j / 400)]
                          for r in range(1, 51) for j in range(400)]
 

@@ -54,18 +54,21 @@ bool solve(std::vector<double>& a, std::vector<double>& b, int m) {
   return true;
 }
 
-// The algebraic least-squares sphere of the points `ids`: |y|^2 = 2 c . y + k with y = x - m
-// (m their mean, which keeps the normal equations well scaled), then one step of refinement
-// on the residuals. False when the system is singular (points in a hyperplane).
-bool fit(const double* coords, int dim, const std::vector<std::int32_t>& ids, Sphere& sphere) {
-  if (ids.size() < static_cast<std::size_t>(dim + 2)) return false;
+// The algebraic least-squares fit of concentric spheres to the points `ids`, point i on sphere
+// group[i] of `groups` (none: all on one): |y|^2 = 2 c . y + k_j with y = x - m (m their
+// mean, which keeps the normal equations well scaled), then one step of refinement on the
+// residuals. The centre is m + c, and sphere.radius2 the squared radius of group 0. False when
+// the system is singular (points in a hyperplane, or a group of one point).
+bool fit_concentric(const double* coords, int dim, const std::vector<std::int32_t>& ids, const std::vector<int>* group, int groups,
+                    Sphere& sphere) {
+  if (ids.size() < static_cast<std::size_t>(dim + groups + 1)) return false;
   const auto point = [&](std::int32_t id) { return coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim); };
   std::vector<double> mean(static_cast<std::size_t>(dim), 0.0);
   for (std::int32_t id : ids)
     for (int k = 0; k < dim; ++k) mean[static_cast<std::size_t>(k)] += point(id)[k];
   for (double& v : mean) v /= static_cast<double>(ids.size());
 
-  const int m = dim + 1;
+  const int m = dim + groups;
   std::vector<double> normal(static_cast<std::size_t>(m * m)), z(static_cast<std::size_t>(m));
   // The normal equations' right-hand side for the residual of (c, k): the first pass with
   // c = 0, k = 0, the refinement with the first solution.
@@ -73,15 +76,17 @@ bool fit(const double* coords, int dim, const std::vector<std::int32_t>& ids, Sp
   for (int pass = 0; pass < 2; ++pass) {
     std::fill(normal.begin(), normal.end(), 0.0);
     std::vector<double> rhs(static_cast<std::size_t>(m), 0.0);
-    for (std::int32_t id : ids) {
-      double norm2 = 0.0, predicted = solution[static_cast<std::size_t>(dim)];
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const int j = dim + (group ? (*group)[i] : 0);
+      double norm2 = 0.0, predicted = solution[static_cast<std::size_t>(j)];
+      std::fill(z.begin() + dim, z.end(), 0.0);
       for (int k = 0; k < dim; ++k) {
-        const double y = point(id)[k] - mean[static_cast<std::size_t>(k)];
+        const double y = point(ids[i])[k] - mean[static_cast<std::size_t>(k)];
         z[static_cast<std::size_t>(k)] = 2 * y;
         norm2 += y * y;
         predicted += 2 * y * solution[static_cast<std::size_t>(k)];
       }
-      z[static_cast<std::size_t>(dim)] = 1.0;
+      z[static_cast<std::size_t>(j)] = 1.0;
       const double residual = norm2 - predicted;
       for (int r = 0; r < m; ++r) {
         rhs[static_cast<std::size_t>(r)] += z[static_cast<std::size_t>(r)] * residual;
@@ -101,15 +106,22 @@ bool fit(const double* coords, int dim, const std::vector<std::int32_t>& ids, Sp
   return std::isfinite(sphere.radius2) && sphere.radius2 > 0.0;
 }
 
+// The least-squares sphere of the points `ids`.
+bool fit(const double* coords, int dim, const std::vector<std::int32_t>& ids, Sphere& sphere) {
+  return fit_concentric(coords, dim, ids, nullptr, 1, sphere);
+}
+
 double distance2(const double* x, const std::vector<double>& g) {
   double t = 0.0;
   for (std::size_t k = 0; k < g.size(); ++k) t += (x[k] - g[k]) * (x[k] - g[k]);
   return t;
 }
 
+// Whether a squared distance t from the centre is near the sphere of squared radius r2.
+bool is_near(double t, double r2) { return std::fabs(t - r2) <= kNear * r2; }
+
 bool is_near(const double* coords, int dim, std::int32_t id, const Sphere& sphere) {
-  return std::fabs(distance2(coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim), sphere.centre) - sphere.radius2) <=
-         kNear * sphere.radius2;
+  return is_near(distance2(coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim), sphere.centre), sphere.radius2);
 }
 
 // The ids among `ids` near the sphere.
@@ -119,6 +131,20 @@ std::vector<std::int32_t> near(const double* coords, int dim, const std::vector<
   for (std::int32_t id : ids)
     if (is_near(coords, dim, id, sphere)) kept.push_back(id);
   return kept;
+}
+
+// How many of `ids` lie near the sphere or near one of the other spheres about its centre
+// (squared radii `others`).
+std::size_t near_any(const double* coords, int dim, const std::vector<std::int32_t>& ids, const Sphere& sphere,
+                     const std::vector<double>& others) {
+  std::size_t count = 0;
+  for (std::int32_t id : ids) {
+    const double t = distance2(coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim), sphere.centre);
+    bool near_one = is_near(t, sphere.radius2);
+    for (std::size_t i = 0; i < others.size() && !near_one; ++i) near_one = is_near(t, others[i]);
+    count += near_one ? 1 : 0;
+  }
+  return count;
 }
 
 bool mostly(std::size_t part, std::size_t whole) { return static_cast<double>(part) >= kInlierShare * static_cast<double>(whole); }
@@ -133,26 +159,149 @@ bool mostly_near(const double* coords, int dim, const std::vector<std::int32_t>&
   return true;
 }
 
-// A sphere that most of `sample` lies near. First the least-squares fit of the whole sample;
-// but a few points far from the sphere pull that fit off by more than kNear (the 8 corners of
-// the bounding box of 32 000 points on a sphere in 3D, by about their residuals over n: 0.14%
-// of rho), and then no point is near it. So then spheres fitted to dim + 2 sample points drawn
-// at random are tried: with 9 in 10 of the points near one sphere, each draw is all near it
-// with odds of at least 0.9^10 = 0.35 up to d = 8, and kDraws draws all fail with odds below
-// 10^-11. The draws are the same for every run (a fixed seed): the shell changes the work,
-// never the result.
+// Concentric spheres (the layers of a spherical grid, a sphere with a smaller one inside): the
+// shell's offsets are taken around one of them, but a node whose points lie near another sphere
+// about the same centre has as thin a range of offsets, and its cones hold as well. So a centre
+// is also accepted when most of the points lie near at most kMaxSpheres spheres about it, each
+// with at least kSphereShare of them, none wider than kMaxRadiusOverExtent times the sample's
+// bounding box: a sphere much larger than the points is near a hyperplane, and the points of
+// any input lie near a few of those.
+constexpr std::size_t kMaxSpheres = 16;
+constexpr double kSphereShare = 0.01;
+constexpr double kMaxRadiusOverExtent = 16.0;
+constexpr double kLooseNear = 16 * kNear;
+
+// The spheres about `centre` that most of `ids` lie near, smallest first, or none: each as its
+// squared radius and its points' positions in `ids`. The squared distances sorted, each sphere
+// takes the run from its least value t up to (1 + 2 tolerance) t, and its squared radius is the
+// run's middle value, which every member is within `tolerance` of; runs with fewer than
+// kSphereShare of the points (and three) are not spheres.
+// The shell takes its offsets around the smallest: the ball inside it is one Delaunay cell
+// with all its points on its sphere, the case the shell is for, where the other spheres' cells
+// join points of two spheres (time_search with the smallest, and with the most populous sphere
+// of the sample instead: two concentric circles of 10 000 points 0.093 s and 0.288 s; five
+// spheres of 4 000 points in 3D 0.56 s and 3.84 s; one run each).
+struct Spheres {
+  std::vector<double> radii2;
+  std::vector<std::pair<double, std::size_t>> sorted;  // (squared distance, position in ids)
+  std::vector<std::size_t> run_start;                  // sphere j's members: sorted[run_start[j], run_end[j])
+  std::vector<std::size_t> run_end;
+};
+Spheres spheres_about(const double* coords, int dim, const std::vector<std::int32_t>& ids, const std::vector<double>& centre,
+                      double tolerance = kNear) {
+  Spheres spheres;
+  std::vector<std::pair<double, std::size_t>>& t = spheres.sorted;
+  t.resize(ids.size());
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    t[i] = {distance2(coords + static_cast<std::size_t>(ids[i]) * static_cast<std::size_t>(dim), centre), i};
+  std::sort(t.begin(), t.end());
+  const auto least = std::max<std::size_t>(3, static_cast<std::size_t>(kSphereShare * static_cast<double>(ids.size())));
+  std::size_t covered = 0;
+  for (std::size_t i = 0; i < t.size();) {
+    const double limit = t[i].first + 2 * tolerance * t[i].first;
+    std::size_t j = i + 1;
+    while (j < t.size() && t[j].first <= limit) ++j;
+    if (j - i >= least) {
+      spheres.radii2.push_back(0.5 * (t[i].first + t[j - 1].first));
+      spheres.run_start.push_back(i);
+      spheres.run_end.push_back(j);
+      covered += j - i;
+    }
+    i = j;
+  }
+  if (!mostly(covered, ids.size()) || spheres.radii2.size() > kMaxSpheres) return {};
+  return spheres;
+}
+
+// The joint fit of the concentric spheres (fit_concentric) to their members among `ids`.
+bool refit_concentric(const double* coords, int dim, const std::vector<std::int32_t>& ids, const Spheres& spheres, Sphere& sphere) {
+  std::vector<std::int32_t> points;
+  std::vector<int> group;
+  for (std::size_t j = 0; j < spheres.radii2.size(); ++j)
+    for (std::size_t k = spheres.run_start[j]; k < spheres.run_end[j]; ++k) {
+      points.push_back(ids[spheres.sorted[k].second]);
+      group.push_back(static_cast<int>(j));
+    }
+  return fit_concentric(coords, dim, points, &group, static_cast<int>(spheres.radii2.size()), sphere);
+}
+
+// The squared diagonal of the points' bounding box.
+double extent2(const double* coords, int dim, const std::vector<std::int32_t>& ids) {
+  double total = 0.0;
+  for (int k = 0; k < dim; ++k) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::int32_t id : ids) {
+      const double x = coords[static_cast<std::size_t>(id) * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+    total += (hi - lo) * (hi - lo);
+  }
+  return total;
+}
+
+// The sample, what is drawn from it, and the tests a sphere's centre must pass.
+struct Sample {
+  const double* coords;
+  int dim;
+  std::vector<std::int32_t> ids;
+  std::vector<std::int32_t> sparse;  // every 32nd of ids: a quick first test of concentric spheres
+  double extent2;
+
+  // Whether most of the sample lies near the sphere, or near a few spheres about its centre;
+  // in the latter case sphere.radius2 becomes the smallest one's (see spheres_about). A fit to
+  // points of several spheres misses their centre by their imbalance (8 layers of a spherical
+  // grid, 3D: 0.2% of the radius, four times kNear): the spheres found about it with a looser
+  // tolerance, fitted jointly (one centre, a radius each), find it.
+  bool accepts(Sphere& sphere) const {
+    if (mostly_near(coords, dim, ids, sphere)) return true;
+    if (spheres_about(coords, dim, sparse, sphere.centre, kLooseNear).radii2.empty()) return false;
+    Spheres spheres = spheres_about(coords, dim, ids, sphere.centre);
+    if (spheres.radii2.empty()) {
+      const Spheres loose = spheres_about(coords, dim, ids, sphere.centre, kLooseNear);
+      if (loose.radii2.empty() || !refit_concentric(coords, dim, ids, loose, sphere)) return false;
+      spheres = spheres_about(coords, dim, ids, sphere.centre);
+      if (spheres.radii2.empty()) return false;
+    }
+    for (double r2 : spheres.radii2)
+      if (!(r2 <= kMaxRadiusOverExtent * kMaxRadiusOverExtent * extent2)) return false;
+    sphere.radius2 = spheres.radii2.front();
+    return true;
+  }
+};
+
+// A sphere that most of the sample lies near, or whose centre most of it lies around, on a few
+// spheres. First the least-squares fit of the whole sample (which finds the centre of concentric
+// spheres too, by their symmetry); but a few points far from the sphere pull that fit off by
+// more than kNear (the 8 corners of the bounding box of 32 000 points on a sphere in 3D, by
+// about their residuals over n: 0.14% of rho), and then no point is near it. So then spheres
+// fitted to dim + 2 sample points drawn at random are tried: with 9 in 10 of the points near
+// one sphere, each draw is all near it with odds of at least 0.9^10 = 0.35 up to d = 8, and
+// kDraws draws all fail with odds below 10^-11. Every other draw takes dim + 2 consecutive
+// sample points instead, which lie near each other in the tree's order and so, on concentric
+// spheres, most often on the same one (a draw across k equally populous spheres is all on one
+// with odds k^-(d + 1) only). The draws are the same for every run (a fixed seed): the shell
+// changes the work, never the result.
 constexpr int kDraws = 64;
-bool sphere_of_most(const double* coords, int dim, const std::vector<std::int32_t>& sample, Sphere& sphere) {
-  if (fit(coords, dim, sample, sphere) && mostly_near(coords, dim, sample, sphere)) return true;
-  if (sample.size() < static_cast<std::size_t>(dim + 2)) return false;
+bool sphere_of_most(const Sample& sample, Sphere& sphere) {
+  const std::vector<std::int32_t>& ids = sample.ids;
+  const int dim = sample.dim;
+  if (fit(sample.coords, dim, ids, sphere) && sample.accepts(sphere)) return true;
+  if (ids.size() < static_cast<std::size_t>(dim + 2)) return false;
   std::uint64_t state = 0x9e3779b97f4a7c15ull;
+  const auto next = [&](std::size_t bound) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;  // Knuth's MMIX LCG
+    return static_cast<std::size_t>((state >> 33) % bound);
+  };
   std::vector<std::int32_t> drawn(static_cast<std::size_t>(dim + 2));
   for (int draw = 0; draw < kDraws; ++draw) {
-    for (std::int32_t& id : drawn) {
-      state = state * 6364136223846793005ull + 1442695040888963407ull;  // Knuth's MMIX LCG
-      id = sample[static_cast<std::size_t>((state >> 33) % sample.size())];
+    if (draw % 2 == 0) {
+      for (std::int32_t& id : drawn) id = ids[next(ids.size())];
+    } else {
+      const std::size_t first = next(ids.size() - drawn.size() + 1);
+      std::copy_n(ids.begin() + static_cast<std::ptrdiff_t>(first), drawn.size(), drawn.begin());
     }
-    if (fit(coords, dim, drawn, sphere) && mostly_near(coords, dim, sample, sphere)) return true;
+    if (fit(sample.coords, dim, drawn, sphere) && sample.accepts(sphere)) return true;
   }
   return false;
 }
@@ -335,20 +484,26 @@ void minor_of(const double (&a)[N][N], const int* rows, const int* columns, doub
 SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree) {
   SphereShell shell;
   // A sample first: most inputs are not near a sphere, and this costs them a few thousand points.
-  std::vector<std::int32_t> ids;
+  Sample sample{coords, dim, {}, {}, 0.0};
   const std::int32_t stride = std::max<std::int32_t>(1, n / kSample);
-  for (std::int32_t id = 0; id < n; id += stride) ids.push_back(id);
+  for (std::int32_t id = 0; id < n; id += stride) sample.ids.push_back(id);
+  for (std::size_t i = 0; i < sample.ids.size(); i += 32) sample.sparse.push_back(sample.ids[i]);
+  sample.extent2 = extent2(coords, dim, sample.ids);
   Sphere sphere;
-  if (!sphere_of_most(coords, dim, ids, sphere)) return shell;
+  if (!sphere_of_most(sample, sphere)) return shell;
   // Then the least-squares fit of all the points near that sphere, twice: the points far from
   // it are left out (a centre point, say, would pull the fit off by its distance over n: far
-  // more than rounding), and the second fit sees the points the first one brings near.
+  // more than rounding), and the second fit sees the points the first one brings near. Most
+  // points must then lie near it, or near one of the spheres about its centre that most of the
+  // sample lies near.
   std::vector<std::int32_t> all(static_cast<std::size_t>(n));
   std::iota(all.begin(), all.end(), 0);
   for (int pass = 0; pass < 2; ++pass) {
-    ids = near(coords, dim, all, sphere);
-    if (!mostly(ids.size(), static_cast<std::size_t>(n)) || !fit(coords, dim, ids, sphere)) return shell;
+    const std::vector<std::int32_t> ids = near(coords, dim, all, sphere);
+    if (ids.size() < static_cast<std::size_t>(dim + 2) || !fit(coords, dim, ids, sphere)) return shell;
   }
+  if (!mostly(near_any(coords, dim, all, sphere, spheres_about(coords, dim, sample.ids, sphere.centre).radii2), static_cast<std::size_t>(n)))
+    return shell;
 
   // The points' offsets, then the nodes' ranges, leaves first (children follow their parent in
   // preorder). An exact offset is within u |s| + eta of the computed s.
