@@ -123,16 +123,27 @@ TEST(SphereShell, BuiltForPointsNearASphereOnly) {
           << "d=" << d << ", " << radii.size() << " spheres";
     }
   }
-  // But not a sphere with as many points inside it, nor more than 16 spheres, nor a small grid
+  // The eight layers of a spherical grid (Fibonacci points, the same directions at every
+  // radius, as in Earth models): balanced, but the sample (every fourth point in the tree's
+  // order) is not, and its least-squares fit misses the centre; the joint fit finds it.
+  PointCloud unbalanced{3, {}};
+  const double golden = 3.14159265358979323846 * (3 - std::sqrt(5.0));
+  for (int layer = 0; layer < 8; ++layer)
+    for (int i = 0; i < 2500; ++i) {
+      const double z = 1 - 2 * (i + 0.5) / 2500, r = std::sqrt(1 - z * z), radius = 6371.0 - 300.0 * layer;
+      unbalanced.coords.insert(unbalanced.coords.end(), {radius * r * std::cos(golden * i), radius * r * std::sin(golden * i), radius * z});
+    }
+  EXPECT_TRUE(store_of(unbalanced).shell.active());
+  // But not a sphere with as many points inside it, nor more than 32 spheres, nor a small grid
   // (whose squared distances from its centre take few values), nor points near spheres about
   // several centres.
   PointCloud half_inside = sphere(1500, 3, 14);
   const PointCloud ball = drange::generate_points(Distribution::Ball, 1500, 3, 15);
   half_inside.coords.insert(half_inside.coords.end(), ball.coords.begin(), ball.coords.end());
   EXPECT_FALSE(store_of(half_inside).shell.active());
-  std::vector<double> many(20);
-  for (std::size_t i = 0; i < many.size(); ++i) many[i] = 1.0 - 0.04 * static_cast<double>(i);
-  EXPECT_FALSE(store_of(concentric(200, 3, 16, many)).shell.active());
+  std::vector<double> many(40);
+  for (std::size_t i = 0; i < many.size(); ++i) many[i] = 1.0 - 0.02 * static_cast<double>(i);
+  EXPECT_FALSE(store_of(concentric(110, 3, 16, many)).shell.active());
   EXPECT_FALSE(store_of(drange::generate_points(Distribution::Grid, 512, 3, 1)).shell.active());
   PointCloud apart = concentric(1000, 3, 17, {1.0, 0.5}, 0.0);
   const PointCloud other = concentric(1000, 3, 19, {1.0, 0.5}, 5.0);

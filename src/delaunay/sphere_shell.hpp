@@ -100,7 +100,7 @@ bool float_form(const SphereShell& shell, int d, const double* f0, double s0, co
 
 // The shell of `n` points of dimension `dim` (row-major, in the tree's order: node ranges are
 // point ids), or an inactive one unless 9 in 10 of them lie within a relative 2^-10 of the
-// fitted sphere's squared radius, or of the squared radius of one of at most 16 concentric
+// fitted sphere's squared radius, or of the squared radius of one of at most 32 concentric
 // spheres (sphere_shell.cpp, spheres_about; the offsets are then around the smallest).
 SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree);
 
