@@ -125,7 +125,7 @@ TEST(SphereShell, BuiltForPointsNearASphereOnly) {
   }
   // The eight layers of a spherical grid (Fibonacci points, the same directions at every
   // radius, as in Earth models): balanced, but the sample (every fourth point in the tree's
-  // order) is not, and its least-squares fit misses the centre; the joint fit finds it.
+  // order) is not, and its least-squares fit misses the centre; the fit from pairs finds it.
   PointCloud unbalanced{3, {}};
   const double golden = 3.14159265358979323846 * (3 - std::sqrt(5.0));
   for (int layer = 0; layer < 8; ++layer)

@@ -54,21 +54,18 @@ bool solve(std::vector<double>& a, std::vector<double>& b, int m) {
   return true;
 }
 
-// The algebraic least-squares fit of concentric spheres to the points `ids`, point i on sphere
-// group[i] of `groups` (none: all on one): |y|^2 = 2 c . y + k_j with y = x - m (m their
-// mean, which keeps the normal equations well scaled), then one step of refinement on the
-// residuals. The centre is m + c, and sphere.radius2 the squared radius of group 0. False when
-// the system is singular (points in a hyperplane, or a group of one point).
-bool fit_concentric(const double* coords, int dim, const std::vector<std::int32_t>& ids, const std::vector<int>* group, int groups,
-                    Sphere& sphere) {
-  if (ids.size() < static_cast<std::size_t>(dim + groups + 1)) return false;
+// The algebraic least-squares sphere of the points `ids`: |y|^2 = 2 c . y + k with y = x - m
+// (m their mean, which keeps the normal equations well scaled), then one step of refinement
+// on the residuals. False when the system is singular (points in a hyperplane).
+bool fit(const double* coords, int dim, const std::vector<std::int32_t>& ids, Sphere& sphere) {
+  if (ids.size() < static_cast<std::size_t>(dim + 2)) return false;
   const auto point = [&](std::int32_t id) { return coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim); };
   std::vector<double> mean(static_cast<std::size_t>(dim), 0.0);
   for (std::int32_t id : ids)
     for (int k = 0; k < dim; ++k) mean[static_cast<std::size_t>(k)] += point(id)[k];
   for (double& v : mean) v /= static_cast<double>(ids.size());
 
-  const int m = dim + groups;
+  const int m = dim + 1;
   std::vector<double> normal(static_cast<std::size_t>(m * m)), z(static_cast<std::size_t>(m));
   // The normal equations' right-hand side for the residual of (c, k): the first pass with
   // c = 0, k = 0, the refinement with the first solution.
@@ -76,17 +73,15 @@ bool fit_concentric(const double* coords, int dim, const std::vector<std::int32_
   for (int pass = 0; pass < 2; ++pass) {
     std::fill(normal.begin(), normal.end(), 0.0);
     std::vector<double> rhs(static_cast<std::size_t>(m), 0.0);
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-      const int j = dim + (group ? (*group)[i] : 0);
-      double norm2 = 0.0, predicted = solution[static_cast<std::size_t>(j)];
-      std::fill(z.begin() + dim, z.end(), 0.0);
+    for (std::int32_t id : ids) {
+      double norm2 = 0.0, predicted = solution[static_cast<std::size_t>(dim)];
       for (int k = 0; k < dim; ++k) {
-        const double y = point(ids[i])[k] - mean[static_cast<std::size_t>(k)];
+        const double y = point(id)[k] - mean[static_cast<std::size_t>(k)];
         z[static_cast<std::size_t>(k)] = 2 * y;
         norm2 += y * y;
         predicted += 2 * y * solution[static_cast<std::size_t>(k)];
       }
-      z[static_cast<std::size_t>(j)] = 1.0;
+      z[static_cast<std::size_t>(dim)] = 1.0;
       const double residual = norm2 - predicted;
       for (int r = 0; r < m; ++r) {
         rhs[static_cast<std::size_t>(r)] += z[static_cast<std::size_t>(r)] * residual;
@@ -104,11 +99,6 @@ bool fit_concentric(const double* coords, int dim, const std::vector<std::int32_
   }
   sphere.radius2 = solution[static_cast<std::size_t>(dim)] + c2;
   return std::isfinite(sphere.radius2) && sphere.radius2 > 0.0;
-}
-
-// The least-squares sphere of the points `ids`.
-bool fit(const double* coords, int dim, const std::vector<std::int32_t>& ids, Sphere& sphere) {
-  return fit_concentric(coords, dim, ids, nullptr, 1, sphere);
 }
 
 double distance2(const double* x, const std::vector<double>& g) {
@@ -168,23 +158,12 @@ bool mostly_near(const double* coords, int dim, const std::vector<std::int32_t>&
 // any input lie near a few of those.
 constexpr std::size_t kMaxSpheres = 32;
 constexpr double kSphereShare = 0.01;
+constexpr std::size_t kSpherePoints = 64;
 constexpr double kMaxRadiusOverExtent = 16.0;
-// The tolerances of the sparse sample's test and of the joint fit's first grouping (a run's
-// width must also separate the spheres there: see spheres_in).
-constexpr double kTolerances[] = {kNear, 4 * kNear, 16 * kNear};
+// The largest step between the squared distances of two points that centre_from_pairs takes
+// to lie on one sphere, relative to the median step.
+constexpr double kPairGap = 8.0;
 
-// Spheres about a centre that most of a set of points lie near, smallest first: each as its
-// squared radius and its members, a run of the points' sorted squared distances (Distances).
-// The shell takes its offsets around the smallest: the ball inside it is one Delaunay cell
-// with all its points on its sphere, the case the shell is for, where the other spheres' cells
-// join points of two spheres (time_search with the smallest, and with the most populous sphere
-// of the sample instead: two concentric circles of 10 000 points 0.093 s and 0.288 s; five
-// spheres of 4 000 points in 3D 0.56 s and 3.84 s; one run each).
-struct Spheres {
-  std::vector<double> radii2;
-  std::vector<std::size_t> run_start;  // sphere j's members: positions [run_start[j], run_end[j]) of the sorted distances
-  std::vector<std::size_t> run_end;
-};
 using Distances = std::vector<std::pair<double, std::size_t>>;  // (squared distance, position in ids), sorted
 
 Distances by_distance(const double* coords, int dim, const std::vector<std::int32_t>& ids, const std::vector<double>& centre) {
@@ -195,58 +174,119 @@ Distances by_distance(const double* coords, int dim, const std::vector<std::int3
   return t;
 }
 
-// The spheres that most of the points of `t` lie near, or none. Each sphere takes the run from
-// its least value t up to (1 + 2 tolerance) t, and its squared radius is the run's middle
-// value, which every member is within `tolerance` of; runs with fewer than kSphereShare of the
-// points (and `fewest`) are not spheres. `separated`: each sphere's least value must also lie a
-// run's width beyond the last of the sphere before, as on layers, where the squared distances
-// of points spread evenly (any input, seen from a far centre) fill runs end to end: at 16
-// kNear, uniform 3D points met the test without it and paid for a joint fit of 32 groups
-// (callgrind, uniform 3D 20k: +3.4% against +0.5% with it).
-Spheres spheres_in(const Distances& t, double tolerance, bool separated = false, std::size_t fewest = 3) {
+// The squared radii of the spheres that most of the points of `t` lie near, smallest first, or
+// none. Each sphere takes the run from its least value t up to (1 + 2 kNear) t, and its squared
+// radius is the run's middle value, which every member is within kNear of; runs with fewer
+// than kSphereShare of the points (and `fewest`) are not spheres (a small grid's squared
+// distances from its centre take few values, each held by a few dozen points: 8^3 points, 20
+// values held by 8 to 48 points). The shell takes its offsets around the smallest: the ball
+// inside it is one Delaunay cell with all its points on its sphere, the case the shell is for,
+// where the other spheres' cells join points of two spheres (time_search with the smallest,
+// and with the most populous sphere of the sample instead: two concentric circles of 10 000
+// points 0.093 s and 0.288 s; five spheres of 4 000 points in 3D 0.56 s and 3.84 s; one run
+// each).
+std::vector<double> spheres_in(const Distances& t, std::size_t fewest = kSpherePoints) {
   const auto least = std::max<std::size_t>(fewest, static_cast<std::size_t>(kSphereShare * static_cast<double>(t.size())));
-  Spheres spheres;
+  std::vector<double> radii2;
   std::size_t covered = 0;
   for (std::size_t i = 0; i < t.size();) {
-    const double limit = t[i].first + 2 * tolerance * t[i].first;
+    const double limit = t[i].first + 2 * kNear * t[i].first;
     std::size_t j = i + 1;
     while (j < t.size() && t[j].first <= limit) ++j;
     if (j - i >= least) {
-      if (separated && !spheres.run_end.empty()) {
-        const double before = t[spheres.run_end.back() - 1].first;
-        if (!(t[i].first - before > 2 * tolerance * before)) return {};
-      }
-      spheres.radii2.push_back(0.5 * (t[i].first + t[j - 1].first));
-      spheres.run_start.push_back(i);
-      spheres.run_end.push_back(j);
+      radii2.push_back(0.5 * (t[i].first + t[j - 1].first));
       covered += j - i;
     }
     i = j;
   }
-  if (!mostly(covered, t.size()) || spheres.radii2.size() > kMaxSpheres) return {};
-  return spheres;
+  if (!mostly(covered, t.size()) || radii2.size() > kMaxSpheres) return {};
+  return radii2;
 }
 
 // The squared radii of the spheres about `centre` that most of `ids` lie near (spheres_in).
 std::vector<double> spheres_about(const double* coords, int dim, const std::vector<std::int32_t>& ids, const std::vector<double>& centre) {
-  return spheres_in(by_distance(coords, dim, ids, centre), kNear).radii2;
+  return spheres_in(by_distance(coords, dim, ids, centre));
 }
 
-// The joint fit of the concentric spheres (fit_concentric) to their members among `ids`.
-bool refit_concentric(const double* coords, int dim, const std::vector<std::int32_t>& ids, const Distances& t, const Spheres& spheres,
-                      Sphere& sphere) {
-  std::vector<std::int32_t> points;
-  std::vector<int> group;
-  for (std::size_t j = 0; j < spheres.radii2.size(); ++j)
-    for (std::size_t k = spheres.run_start[j]; k < spheres.run_end[j]; ++k) {
-      points.push_back(ids[t[k].second]);
-      group.push_back(static_cast<int>(j));
+// A better centre of concentric spheres than `centre`, from the points `ids` in the order of
+// their squared distances from it (`t`). A least-squares fit to points of several spheres
+// misses their centre by the imbalance of their sample (five spheres of 4 000 random points:
+// by 1.2% of the largest radius; eight layers of a Fibonacci grid: 0.2%), too far for their
+// squared distances to fall within kNear of a few values. But as long as the spheres' ranges
+// of squared distances do not overlap, two points next in that order lie on one sphere, and
+// |x - g|^2 = |x' - g|^2 is linear in g: 2 (x' - x) . g = |x'|^2 - |x|^2 (about the points'
+// mean, for scale). The least-squares solution over those pairs, leaving out the pairs whose
+// relative step is over kPairGap times the median step: where the order passes from one
+// sphere to the next (the steps within a sphere are its spread over its points).
+bool centre_from_pairs(const double* coords, int dim, const std::vector<std::int32_t>& ids, const Distances& t,
+                       std::vector<double>& centre) {
+  if (t.size() < 3) return false;
+  const auto d = static_cast<std::size_t>(dim);
+  const auto point = [&](std::size_t i) { return coords + static_cast<std::size_t>(ids[t[i].second]) * d; };
+  std::vector<double> mean(d, 0.0);
+  for (std::size_t i = 0; i < t.size(); ++i)
+    for (std::size_t k = 0; k < d; ++k) mean[k] += point(i)[k];
+  for (double& v : mean) v /= static_cast<double>(t.size());
+  std::vector<double> steps(t.size() - 1);
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) steps[i] = (t[i + 1].first - t[i].first) / t[i].first;
+  std::vector<double> sorted_steps = steps;
+  std::nth_element(sorted_steps.begin(), sorted_steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), sorted_steps.end());
+  const double largest_step = kPairGap * sorted_steps[steps.size() / 2];
+  std::vector<double> normal(d * d, 0.0), rhs(d, 0.0), a(d);
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+    if (!(steps[i] <= largest_step)) continue;
+    double value = 0.0;
+    for (std::size_t k = 0; k < d; ++k) {
+      const double y = point(i)[k] - mean[k], y_next = point(i + 1)[k] - mean[k];
+      a[k] = 2 * (y_next - y);
+      value += y_next * y_next - y * y;
     }
-  return fit_concentric(coords, dim, points, &group, static_cast<int>(spheres.radii2.size()), sphere);
+    for (std::size_t r = 0; r < d; ++r) {
+      rhs[r] += a[r] * value;
+      for (std::size_t c = 0; c < d; ++c) normal[r * d + c] += a[r] * a[c];
+    }
+    ++pairs;
+  }
+  if (pairs < 2 * d || !solve(normal, rhs, dim)) return false;
+  for (std::size_t k = 0; k < d; ++k) centre[k] = mean[k] + rhs[k];
+  return true;
 }
+
+// The sample, and the tests a sphere's centre must pass.
+struct Sample {
+  const double* coords;
+  int dim;
+  std::vector<std::int32_t> ids;
+  std::vector<std::int32_t> sparse;  // every 8th of ids
+  double extent2;                    // the squared diagonal of its bounding box
+
+  // Whether most of the sample lies near a few spheres about the centre of `sphere`, or about
+  // the centre that centre_from_pairs finds from it, twice; if so, `sphere` becomes the
+  // smallest of those spheres (see spheres_in). A new centre is tried on the sparse sample
+  // first, where three points make a sphere: most inputs are not concentric spheres, and this
+  // spares them two sorts of the sample.
+  bool concentric(Sphere& sphere) const {
+    std::vector<double> centre = sphere.centre;
+    for (int round = 0; round < 3; ++round) {
+      if (round > 0 && spheres_in(by_distance(coords, dim, sparse, centre), 3).empty()) return false;
+      const Distances t = by_distance(coords, dim, ids, centre);
+      const std::vector<double> radii2 = spheres_in(t);
+      if (!radii2.empty()) {
+        for (double r2 : radii2)
+          if (!(r2 <= kMaxRadiusOverExtent * kMaxRadiusOverExtent * extent2)) return false;
+        sphere.centre = centre;
+        sphere.radius2 = radii2.front();
+        return true;
+      }
+      if (round == 2 || !centre_from_pairs(coords, dim, ids, t, centre)) return false;
+    }
+    return false;
+  }
+};
 
 // The squared diagonal of the points' bounding box.
-double extent2(const double* coords, int dim, const std::vector<std::int32_t>& ids) {
+double bounding_diagonal2(const double* coords, int dim, const std::vector<std::int32_t>& ids) {
   double total = 0.0;
   for (int k = 0; k < dim; ++k) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -260,75 +300,30 @@ double extent2(const double* coords, int dim, const std::vector<std::int32_t>& i
   return total;
 }
 
-// The sample, what is drawn from it, and the tests a sphere's centre must pass.
-struct Sample {
-  const double* coords;
-  int dim;
-  std::vector<std::int32_t> ids;
-  std::vector<std::int32_t> sparse;  // every 32nd of ids: a quick first test of concentric spheres
-  double extent2;
-
-  // Whether most of the sample lies near the sphere, or near a few spheres about its centre;
-  // in the latter case sphere.radius2 becomes the smallest one's (see spheres_about). A fit to
-  // points of several spheres misses their centre by their imbalance (8 layers of a spherical
-  // grid, 3D: 0.2% of the radius, four times kNear; 32 layers: twice): the spheres found about
-  // it with a looser tolerance, fitted jointly (one centre, a radius each), find it. Every
-  // sphere's test first takes the sparse sample, sorted once, with each tolerance, where two
-  // points make a sphere (32 layers leave four points of it on each).
-  bool accepts(Sphere& sphere) const {
-    if (mostly_near(coords, dim, ids, sphere)) return true;
-    const Distances sparse_t = by_distance(coords, dim, sparse, sphere.centre);
-    if (std::none_of(std::begin(kTolerances), std::end(kTolerances),
-                     [&](double tolerance) { return !spheres_in(sparse_t, tolerance, true, 2).radii2.empty(); }))
-      return false;
-    const Distances t = by_distance(coords, dim, ids, sphere.centre);
-    Spheres spheres = spheres_in(t, kNear);
-    for (const double tolerance : kTolerances) {
-      if (!spheres.radii2.empty() || tolerance == kNear) continue;
-      const Spheres loose = spheres_in(t, tolerance, true);
-      if (!loose.radii2.empty() && refit_concentric(coords, dim, ids, t, loose, sphere))
-        spheres = spheres_in(by_distance(coords, dim, ids, sphere.centre), kNear);
-    }
-    if (spheres.radii2.empty()) return false;
-    for (double r2 : spheres.radii2)
-      if (!(r2 <= kMaxRadiusOverExtent * kMaxRadiusOverExtent * extent2)) return false;
-    sphere.radius2 = spheres.radii2.front();
-    return true;
-  }
-};
-
 // A sphere that most of the sample lies near, or whose centre most of it lies around, on a few
-// spheres. First the least-squares fit of the whole sample (which finds the centre of concentric
-// spheres too, by their symmetry); but a few points far from the sphere pull that fit off by
-// more than kNear (the 8 corners of the bounding box of 32 000 points on a sphere in 3D, by
-// about their residuals over n: 0.14% of rho), and then no point is near it. So then spheres
-// fitted to dim + 2 sample points drawn at random are tried: with 9 in 10 of the points near
-// one sphere, each draw is all near it with odds of at least 0.9^10 = 0.35 up to d = 8, and
-// kDraws draws all fail with odds below 10^-11. Every other draw takes dim + 2 consecutive
-// sample points instead, which lie near each other in the tree's order and so, on concentric
-// spheres, most often on the same one (a draw across k equally populous spheres is all on one
-// with odds k^-(d + 1) only). The draws are the same for every run (a fixed seed): the shell
-// changes the work, never the result.
+// spheres. First the least-squares fit of the whole sample (which is near the centre of
+// concentric spheres too, by their symmetry); but a few points far from the sphere pull that
+// fit off by more than kNear (the 8 corners of the bounding box of 32 000 points on a sphere in
+// 3D, by about their residuals over n: 0.14% of rho), and then no point is near it. So then
+// spheres fitted to dim + 2 sample points drawn at random are tried: with 9 in 10 of the points
+// near one sphere, each draw is all near it with odds of at least 0.9^10 = 0.35 up to d = 8,
+// and kDraws draws all fail with odds below 10^-11. The draws are the same for every run (a
+// fixed seed): the shell changes the work, never the result.
 constexpr int kDraws = 64;
 bool sphere_of_most(const Sample& sample, Sphere& sphere) {
   const std::vector<std::int32_t>& ids = sample.ids;
   const int dim = sample.dim;
-  if (fit(sample.coords, dim, ids, sphere) && sample.accepts(sphere)) return true;
+  if (fit(sample.coords, dim, ids, sphere) && (mostly_near(sample.coords, dim, ids, sphere) || sample.concentric(sphere)))
+    return true;
   if (ids.size() < static_cast<std::size_t>(dim + 2)) return false;
   std::uint64_t state = 0x9e3779b97f4a7c15ull;
-  const auto next = [&](std::size_t bound) {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;  // Knuth's MMIX LCG
-    return static_cast<std::size_t>((state >> 33) % bound);
-  };
   std::vector<std::int32_t> drawn(static_cast<std::size_t>(dim + 2));
   for (int draw = 0; draw < kDraws; ++draw) {
-    if (draw % 2 == 0) {
-      for (std::int32_t& id : drawn) id = ids[next(ids.size())];
-    } else {
-      const std::size_t first = next(ids.size() - drawn.size() + 1);
-      std::copy_n(ids.begin() + static_cast<std::ptrdiff_t>(first), drawn.size(), drawn.begin());
+    for (std::int32_t& id : drawn) {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;  // Knuth's MMIX LCG
+      id = ids[static_cast<std::size_t>((state >> 33) % ids.size())];
     }
-    if (fit(sample.coords, dim, drawn, sphere) && sample.accepts(sphere)) return true;
+    if (fit(sample.coords, dim, drawn, sphere) && mostly_near(sample.coords, dim, ids, sphere)) return true;
   }
   return false;
 }
@@ -514,8 +509,8 @@ SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, cons
   Sample sample{coords, dim, {}, {}, 0.0};
   const std::int32_t stride = std::max<std::int32_t>(1, n / kSample);
   for (std::int32_t id = 0; id < n; id += stride) sample.ids.push_back(id);
-  for (std::size_t i = 0; i < sample.ids.size(); i += 32) sample.sparse.push_back(sample.ids[i]);
-  sample.extent2 = extent2(coords, dim, sample.ids);
+  for (std::size_t i = 0; i < sample.ids.size(); i += 8) sample.sparse.push_back(sample.ids[i]);
+  sample.extent2 = bounding_diagonal2(coords, dim, sample.ids);
   Sphere sphere;
   if (!sphere_of_most(sample, sphere)) return shell;
   // Then the least-squares fit of all the points near that sphere, twice: the points far from
