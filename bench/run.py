@@ -57,6 +57,15 @@ DRANGE_ONLY = {("uniform", 216000, 3)}
 # 224 and 333 s on 7D 4 500, 7 000 and 9 000 points, 194 and 301 s on 8D 1 500 and 2 000, with
 # a peak of 4.5 and 6.3 GiB on the largest.
 BEYOND = [("uniform", 4500, 7), ("uniform", 9000, 7), ("uniform", 1500, 8), ("uniform", 2000, 8)]
+# `--degenerate`: the probe inputs of bench/degenerate_families.py (points on curved sets that are
+# not one input sphere: concentric spheres, spheres about several centres, rings, smooth
+# surfaces), as ("family:NAME", n, d), against the peers of DEGENERATE_PEERS only.
+DEGENERATE = [("family:" + name, n, d) for name, n, d in [
+    ("two_circles", 20000, 2), ("bubbles2", 20000, 2), ("polar_grid", 20000, 2),
+    ("two_spheres3", 20000, 3), ("five_spheres3", 20000, 3), ("layers3", 20000, 3), ("bubbles3", 20000, 3),
+    ("cylinder_rings", 20000, 3), ("circle_in_3d", 20002, 3), ("cylinder", 20000, 3), ("torus", 20000, 3),
+    ("hemisphere", 20000, 3), ("sphere_in_ball", 20000, 3), ("two_spheres4", 5000, 4)]]
+DEGENERATE_PEERS = {2: ["cgal2", "qhull"], 3: ["cgal3", "qhull"], 4: ["cgal-dd", "qhull"]}
 QUICK = [("uniform", 100000, 2), ("grid", 90000, 2), ("uniform", 100000, 3), ("uniform", 10000, 4), ("uniform", 3000, 5)]
 # Ablation: (distribution, n, d, variants).
 ABLATION = [
@@ -80,6 +89,13 @@ def grid_label(dist, n, d):
 
 
 def input_file(build, data, dist, n, d):
+    if dist.startswith("family:"):
+        families = os.path.join(data, "families")
+        path = os.path.join(families, dist[len("family:"):] + ".txt")
+        if not os.path.exists(path):
+            script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "degenerate_families.py")
+            subprocess.run([sys.executable, script, families], check=True, stdout=subprocess.DEVNULL)
+        return path
     path = os.path.join(data, f"{dist}_{d}d_{n}.txt")
     if not os.path.exists(path):
         subprocess.run([os.path.join(build, "drange"), "generate", dist, str(n), str(d), "--seed", "1", "-o", path],
@@ -212,6 +228,8 @@ def main():
     ap.add_argument("--ablation-only", action="store_true")
     ap.add_argument("--beyond", action="store_true",
                     help="the 7D and 8D rows where the peers take over 10 minutes (about 70 min)")
+    ap.add_argument("--degenerate", action="store_true",
+                    help="the probe inputs of bench/degenerate_families.py against CGAL and Qhull (about 10 min)")
     ap.add_argument("--no-ablation", action="store_true")
     ap.add_argument("--repeat", type=int, default=1,
                     help="run each measurement N times and report the median (odd N: the middle run)")
@@ -228,8 +246,9 @@ def main():
     own_timeout = 3 * timeout
     mem_limit = int(args.mem_limit_gib * 2**30) if args.mem_limit_gib > 0 else 0
     os.makedirs(args.data, exist_ok=True)
-    rows = QUICK if args.quick else BEYOND if args.beyond else STANDARD
-    ablation = QUICK_ABLATION if args.quick else [] if args.beyond else ABLATION
+    rows = QUICK if args.quick else BEYOND if args.beyond else DEGENERATE if args.degenerate else STANDARD
+    ablation = QUICK_ABLATION if args.quick else [] if args.beyond or args.degenerate else ABLATION
+    peers_by_dim = DEGENERATE_PEERS if args.degenerate else PEERS_BY_DIM
     if args.repeat < 1:
         sys.exit("bench/run.py: --repeat must be at least 1")
     if args.rows:
@@ -243,7 +262,7 @@ def main():
     started = time.monotonic()
     load_before = open("/proc/loadavg").read().split()[:3]
     out = []
-    title = "quick" if args.quick else "beyond the peers'" if args.beyond else "standard"
+    title = "quick" if args.quick else "beyond the peers'" if args.beyond else "degenerate families'" if args.degenerate else "standard"
     if args.rows:
         title = "selected rows of the " + title
     out.append(f"# drange benchmark ({title} set)")
@@ -258,7 +277,7 @@ def main():
     results = []  # (row, peer, result) for the CSV
     table = []
     if rows:
-        peers_in_set = [p for p in ALL_PEERS if any(p in PEERS_BY_DIM.get(d, HIGH_D_PEERS) for _, _, d in rows)]
+        peers_in_set = [p for p in ALL_PEERS if any(p in peers_by_dim.get(d, HIGH_D_PEERS) for _, _, d in rows)]
         cores = os.cpu_count() or 1
         head = ["input", "d", "n", "drange s", "drange MiB", "bytes/simplex", "calls/simplex", "simplices",
                 f"drange {cores} threads s", "speed-up"]
@@ -278,7 +297,7 @@ def main():
             ours = run_median(args.build, "drange", path, own_timeout, mem_limit, args.repeat)
             results.append((dist, n, d, "drange", ours))
             label = grid_label(dist, n, d)
-            cells = [dist + (f" {label}" if label else ""), str(d), f"{n:,}".replace(",", " "),
+            cells = [dist.removeprefix("family:") + (f" {label}" if label else ""), str(d), f"{n:,}".replace(",", " "),
                      secs(ours, own_timeout), mib(ours)]
             if ours.get("status") == "ok":
                 own = int(ours["peak_rss"]) - int(ours["input_rss"])
@@ -296,7 +315,7 @@ def main():
                 cells += [secs(threaded, own_timeout), speedup]
             else:
                 cells += ["not run", ""]
-            applicable = [] if (dist, n, d) in DRANGE_ONLY else PEERS_BY_DIM.get(d, HIGH_D_PEERS)
+            applicable = [] if (dist, n, d) in DRANGE_ONLY else peers_by_dim.get(d, HIGH_D_PEERS)
             for p in peers_in_set:
                 if (dist, n, d) in DRANGE_ONLY:
                     cells += ["not run", "", ""]

@@ -4,7 +4,7 @@
 # generates the inputs into bench/data (git-ignored) and runs every (input, peer) pair in a
 # process of its own, with a timeout; writes one Markdown table (and a .csv of the raw lines).
 #
-#   bench/run.sh [--quick] [--ablation] [--beyond] [--micro] [--timeout S] [--repeat N]
+#   bench/run.sh [--quick] [--ablation] [--beyond] [--degenerate] [--micro] [--timeout S] [--repeat N]
 #                [--rows DIST:D:N,...] [-o FILE]
 #
 #   (none)       the standard set and the ablation          -> bench/results.md
@@ -12,6 +12,9 @@
 #   --ablation   the ablation table alone                   -> bench/results-ablation.md
 #   --beyond     7D 4 500 and 9 000 points, 8D 1 500 and 2 000, 600 s limit (about 70 min)
 #                                                           -> bench/results-beyond.md
+#   --degenerate the probe inputs of bench/degenerate_families.py (concentric spheres, bubbles,
+#                rings, smooth surfaces) against CGAL and Qhull (about 10 min)
+#                                                           -> bench/results-degenerate.md
 #   --micro      also run the Google Benchmark microbenchmarks (appended to the file)
 #   --repeat N   each measurement N times, the median reported (the machine's noise: one run
 #                of a cell moved by up to 8% between two runs of the set)
@@ -20,18 +23,19 @@ set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 command_line="bench/run.sh $*"
-quick=0; ablation=0; beyond=0; micro=0; output=""; timeout=(); extra=()
+quick=0; ablation=0; beyond=0; degenerate=0; micro=0; output=""; timeout=(); extra=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1 ;;
     --ablation) ablation=1 ;;
     --beyond) beyond=1 ;;
+    --degenerate) degenerate=1 ;;
     --micro) micro=1 ;;
     --timeout) timeout=(--timeout "$2"); shift ;;
     --repeat) extra+=(--repeat "$2"); shift ;;
     --rows) extra+=(--rows "$2"); shift ;;
     -o) output="$2"; shift ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
@@ -53,6 +57,8 @@ if [ $quick -eq 1 ]; then
   args+=(--quick); output="${output:-$root/bench/results-quick.md}"
 elif [ $beyond -eq 1 ]; then
   args+=(--beyond); output="${output:-$root/bench/results-beyond.md}"
+elif [ $degenerate -eq 1 ]; then
+  args+=(--degenerate); output="${output:-$root/bench/results-degenerate.md}"
 elif [ $ablation -eq 1 ]; then
   args+=(--ablation-only); output="${output:-$root/bench/results-ablation.md}"
 else
