@@ -27,8 +27,8 @@
 //
 // The bounds are sound for any g, but useful only when most points lie near a sphere, or near
 // a few spheres about one centre (a node's points then lie near one of them, and its range is
-// as thin), so the shell is built only then (a least-squares fit; see sphere_shell.cpp). It changes which nodes
-// are visited, never the point found.
+// as thin), so the shell is built only then (a least-squares fit; see sphere_shell.cpp). It
+// changes which nodes are visited, never the point found.
 #pragma once
 
 #include <cstdint>
@@ -101,7 +101,7 @@ bool float_form(const SphereShell& shell, int d, const double* f0, double s0, co
 // The shell of `n` points of dimension `dim` (row-major, in the tree's order: node ranges are
 // point ids), or an inactive one unless 9 in 10 of them lie within a relative 2^-10 of the
 // fitted sphere's squared radius, or of the squared radius of one of at most 32 concentric
-// spheres (sphere_shell.cpp, spheres_about; the offsets are then around the smallest).
+// spheres (sphere_shell.cpp, spheres_in; the offsets are then around the smallest).
 SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree);
 
 }  // namespace drange::engine
