@@ -134,6 +134,10 @@ TEST(SphereShell, BuiltForPointsNearASphereOnly) {
       unbalanced.coords.insert(unbalanced.coords.end(), {radius * r * std::cos(golden * i), radius * r * std::sin(golden * i), radius * z});
     }
   EXPECT_TRUE(store_of(unbalanced).shell.active());
+  // With the corners of a bounding cube too: they pull the fit off, and the pairs leave them out
+  // (their steps in the distance order are large).
+  EXPECT_TRUE(store_of(with_cube_corners(concentric(1500, 3, 18, {1.0, 0.5}), 1.5)).shell.active());
+  EXPECT_TRUE(store_of(with_cube_corners(std::move(unbalanced), 9000.0)).shell.active());
   // But not a sphere with as many points inside it, nor more than 32 spheres, nor a small grid
   // (whose squared distances from its centre take few values), nor points near spheres about
   // several centres.
