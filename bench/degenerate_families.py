@@ -6,9 +6,11 @@ weak, in Qhull's format, into a directory.
 
     bench/degenerate_families.py DIR
 
-Then, per file: drange delaunay DIR/NAME.txt -o /dev/null --stats --threads 1, and
-build-bench/bench/drange_bench_run --peer cgal3 (cgal2 in 2D, qhull) --input DIR/NAME.txt.
-The points come from Python's random module with a fixed seed: the same files on every run.
+`bench/run.sh --degenerate` writes them into bench/data/families and runs each against CGAL
+and Qhull (one table); by hand, per file: drange delaunay DIR/NAME.txt -o /dev/null --stats
+--threads 1, and build-bench/bench/drange_bench_run --peer cgal3 (cgal2 in 2D, cgal-dd in 4D,
+qhull) --input DIR/NAME.txt. The points come from Python's random module with a fixed seed:
+the same files on every run.
 """
 import math
 import os

@@ -178,13 +178,13 @@ Distances by_distance(const double* coords, int dim, const std::vector<std::int3
 // none. Each sphere takes the run from its least value t up to (1 + 2 kNear) t, and its squared
 // radius is the run's middle value, which every member is within kNear of; runs with fewer
 // than kSphereShare of the points (and `fewest`) are not spheres (a small grid's squared
-// distances from its centre take few values, each held by a few dozen points: 8^3 points, 20
-// values held by 8 to 48 points). The shell takes its offsets around the smallest: the ball
-// inside it is one Delaunay cell with all its points on its sphere, the case the shell is for,
-// where the other spheres' cells join points of two spheres (time_search with the smallest,
-// and with the most populous sphere of the sample instead: two concentric circles of 10 000
-// points 0.093 s and 0.288 s; five spheres of 4 000 points in 3D 0.56 s and 3.84 s; one run
-// each).
+// distances from its centre take few values, each held by a few dozen points: 8^3 points, 15
+// values held by 8 to 72 points, 72 of the 512 in values held by 64 or more). The shell takes
+// its offsets around the smallest: the ball inside it is one Delaunay cell with all its points
+// on its sphere, the case the shell is for, where the other spheres' cells join points of two
+// spheres (time_search with the smallest, and with the most populous sphere of the sample
+// instead: two concentric circles of 10 000 points 0.093 s and 0.288 s; five spheres of 4 000
+// points in 3D 0.56 s and 3.84 s; one run each).
 std::vector<double> spheres_in(const Distances& t, std::size_t fewest = kSpherePoints) {
   const auto least = std::max<std::size_t>(fewest, static_cast<std::size_t>(kSphereShare * static_cast<double>(t.size())));
   std::vector<double> radii2;
