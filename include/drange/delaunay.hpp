@@ -100,6 +100,7 @@ struct Statistics {
   std::size_t candidates = 0;        // times a search's candidate point was set or improved
   std::size_t exact_fallbacks = 0;   // decisions the floating-point filters could not take (made with GMP)
   std::size_t max_open_facets = 0;   // the largest frontier held in the facet table
+  std::size_t shell_spheres = 0;     // spheres the points were found near (the search's sphere shell; 0: none)
   std::size_t threads = 1;           // threads used (Options::threads resolved)
   std::size_t wasted_searches = 0;   // searches run ahead by a thread for a facet closed before its turn;
                                      // not counted in search_calls, points_tested, candidates, exact_fallbacks

@@ -52,6 +52,7 @@ py::dict statistics_dict(const Statistics& s) {
   d["candidates"] = s.candidates;
   d["exact_fallbacks"] = s.exact_fallbacks;
   d["max_open_facets"] = s.max_open_facets;
+  d["shell_spheres"] = s.shell_spheres;
   d["threads"] = s.threads;
   d["wasted_searches"] = s.wasted_searches;
   d["seconds_kdtree"] = s.seconds_kdtree;

@@ -34,11 +34,11 @@ std::string Statistics::summary() const {
   std::snprintf(line, sizeof line,
                 "points=%zu distinct=%zu simplices=%zu hull_facets=%zu calls_per_simplex=%.2f "
                 "tested_per_simplex=%.2f candidates_per_simplex=%.2f exact_fallbacks=%zu max_open_facets=%zu "
-                "threads=%zu wasted_searches=%zu "
+                "shell_spheres=%zu threads=%zu wasted_searches=%zu "
                 "time_kdtree=%.3fs time_first_facet=%.3fs time_search=%.3fs time_total=%.3fs peak_rss=%.1fMiB",
                 points, distinct_points, simplices, hull_facets, calls_per_simplex(),
                 simplices ? double(points_tested) / double(simplices) : 0.0,
-                simplices ? double(candidates) / double(simplices) : 0.0, exact_fallbacks, max_open_facets, threads,
+                simplices ? double(candidates) / double(simplices) : 0.0, exact_fallbacks, max_open_facets, shell_spheres, threads,
                 wasted_searches, seconds_kdtree, seconds_first_facet, seconds_search, seconds_total,
                 double(peak_rss_bytes) / (1 << 20));
   return line;

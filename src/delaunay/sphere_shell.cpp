@@ -2,6 +2,7 @@
 #include "delaunay/sphere_shell.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -25,9 +26,12 @@ struct Sphere {
   double radius2 = 0.0;
 };
 
+// The fit's unknowns: the centre and one more, up to 11 dimensions (prepare_points.cpp).
+constexpr int kMaxUnknowns = 12;
+
 // Solves the m x m system a z = b (row-major, both overwritten) by Gaussian elimination with
 // partial pivoting; the solution is left in b. False when a pivot is zero or not finite.
-bool solve(std::vector<double>& a, std::vector<double>& b, int m) {
+bool solve(double* a, double* b, int m) {
   for (int col = 0; col < m; ++col) {
     int pivot = col;
     for (int r = col + 1; r < m; ++r)
@@ -56,23 +60,24 @@ bool solve(std::vector<double>& a, std::vector<double>& b, int m) {
 
 // The algebraic least-squares sphere of the points `ids`: |y|^2 = 2 c . y + k with y = x - m
 // (m their mean, which keeps the normal equations well scaled), then one step of refinement
-// on the residuals. False when the system is singular (points in a hyperplane).
-bool fit(const double* coords, int dim, const std::vector<std::int32_t>& ids, Sphere& sphere) {
-  if (ids.size() < static_cast<std::size_t>(dim + 2)) return false;
+// on the residuals (with `passes` 2). False when the system is singular (points in a
+// hyperplane).
+bool fit(const double* coords, int dim, const std::vector<std::int32_t>& ids, Sphere& sphere, int passes = 2) {
+  if (ids.size() < static_cast<std::size_t>(dim + 2) || dim + 1 > kMaxUnknowns) return false;
   const auto point = [&](std::int32_t id) { return coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim); };
-  std::vector<double> mean(static_cast<std::size_t>(dim), 0.0);
+  // Arrays on the stack: the patches' search fits thousands of spheres of a few points.
+  std::array<double, kMaxUnknowns> mean{}, z{}, solution{}, rhs{};
+  std::array<double, kMaxUnknowns * kMaxUnknowns> normal{};
   for (std::int32_t id : ids)
     for (int k = 0; k < dim; ++k) mean[static_cast<std::size_t>(k)] += point(id)[k];
-  for (double& v : mean) v /= static_cast<double>(ids.size());
+  for (int k = 0; k < dim; ++k) mean[static_cast<std::size_t>(k)] /= static_cast<double>(ids.size());
 
   const int m = dim + 1;
-  std::vector<double> normal(static_cast<std::size_t>(m * m)), z(static_cast<std::size_t>(m));
   // The normal equations' right-hand side for the residual of (c, k): the first pass with
   // c = 0, k = 0, the refinement with the first solution.
-  std::vector<double> solution(static_cast<std::size_t>(m), 0.0);
-  for (int pass = 0; pass < 2; ++pass) {
+  for (int pass = 0; pass < passes; ++pass) {
     std::fill(normal.begin(), normal.end(), 0.0);
-    std::vector<double> rhs(static_cast<std::size_t>(m), 0.0);
+    std::fill(rhs.begin(), rhs.end(), 0.0);
     for (std::int32_t id : ids) {
       double norm2 = 0.0, predicted = solution[static_cast<std::size_t>(dim)];
       for (int k = 0; k < dim; ++k) {
@@ -88,7 +93,7 @@ bool fit(const double* coords, int dim, const std::vector<std::int32_t>& ids, Sp
         for (int c = 0; c < m; ++c) normal[static_cast<std::size_t>(r * m + c)] += z[static_cast<std::size_t>(r)] * z[static_cast<std::size_t>(c)];
       }
     }
-    if (!solve(normal, rhs, m)) return false;
+    if (!solve(normal.data(), rhs.data(), m)) return false;
     for (int r = 0; r < m; ++r) solution[static_cast<std::size_t>(r)] += rhs[static_cast<std::size_t>(r)];
   }
   sphere.centre.assign(static_cast<std::size_t>(dim), 0.0);
@@ -248,7 +253,7 @@ bool centre_from_pairs(const double* coords, int dim, const std::vector<std::int
     }
     ++pairs;
   }
-  if (pairs < 2 * d || !solve(normal, rhs, dim)) return false;
+  if (pairs < 2 * d || !solve(normal.data(), rhs.data(), dim)) return false;
   for (std::size_t k = 0; k < d; ++k) centre[k] = mean[k] + rhs[k];
   return true;
 }
@@ -414,21 +419,24 @@ void cut_blocks(std::int32_t begin, std::int32_t end, std::int32_t size, std::ve
 // 0.300 / 0.288 / 0.342 / 0.564 s; 5D, 1 500 points, 8 / 32: 3.02 / 2.95 s.
 std::int32_t block_size(int dim) { return dim == 2 ? std::numeric_limits<std::int32_t>::max() : dim == 3 ? spatial::KdTree::kOrderLeafSize : 32; }
 
-// The nodes' cones, the blocks and their cones, and the blocks' points by offset.
-void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spatial::KdTree::Node>& nodes,
-                          const std::vector<double>& g, SphereShell& shell) {
+// The nodes' cones, the blocks and their cones, and the blocks' points by offset: each about
+// its sphere's centre, for the nodes and leaves in a sphere (SphereShell::node_sphere).
+void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spatial::KdTree::Node>& nodes, SphereShell& shell) {
   const auto d = static_cast<std::size_t>(dim);
   const std::size_t n = shell.offset.size(), stride = d + 4;
-  std::vector<double> unit(n * d), radius(n);
+  std::vector<double> unit(n * d, 0.0), radius(n, 0.0);
   for (std::size_t id = 0; id < n; ++id) {
+    const std::int32_t k = shell.point_sphere[id];
+    if (k < 0) continue;
+    const double* g = shell.sphere(k).centre;
     double r2 = 0.0;
-    for (std::size_t k = 0; k < d; ++k) {
-      const double y = coords[id * d + k] - g[k];
-      unit[id * d + k] = y;
+    for (std::size_t c = 0; c < d; ++c) {
+      const double y = coords[id * d + c] - g[c];
+      unit[id * d + c] = y;
       r2 += y * y;
     }
     radius[id] = std::sqrt(r2);
-    for (std::size_t k = 0; k < d; ++k) unit[id * d + k] = radius[id] > 0.0 ? unit[id * d + k] / radius[id] : 0.0;
+    for (std::size_t c = 0; c < d; ++c) unit[id * d + c] = radius[id] > 0.0 ? unit[id * d + c] / radius[id] : 0.0;
   }
   // The nodes' axes: the sums of their points' directions (children before parents: preorder
   // backwards).
@@ -437,6 +445,11 @@ void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spati
   shell.first_block.assign(nodes.size(), -1);
   for (std::size_t i = nodes.size(); i-- > 0;) {
     const spatial::KdTree::Node& node = nodes[i];
+    double* cone = &shell.cone[i * stride];
+    if (shell.node_sphere[i] < 0) {
+      cone[d] = -2.0;
+      continue;
+    }
     double* s = &sum[i * d];
     if (node.right < 0) {
       for (auto id = static_cast<std::size_t>(node.begin); id < static_cast<std::size_t>(node.end); ++id)
@@ -445,15 +458,22 @@ void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spati
       const std::size_t left = i + 1, right = static_cast<std::size_t>(node.right);
       for (std::size_t k = 0; k < d; ++k) s[k] = sum[left * d + k] + sum[right * d + k];
     }
-    fit_cone(unit, radius, dim, node.begin, node.end, s, &shell.cone[i * stride]);
+    fit_cone(unit, radius, dim, node.begin, node.end, s, cone);
   }
-  // The blocks, leaf by leaf: preorder lists the leaves by position (a left child's points
-  // come first), so block_start increases.
+  // The blocks, leaf by leaf and run by run: preorder lists the leaves by position (a left
+  // child's points come first), so block_start increases. A run in no sphere is one block,
+  // without a cone.
   shell.block_start.clear();
+  shell.block_sphere.clear();
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     if (nodes[i].right >= 0) continue;
-    shell.first_block[i] = static_cast<std::int32_t>(shell.block_start.size());
-    cut_blocks(nodes[i].begin, nodes[i].end, block_size(dim), shell.block_start);
+    if (shell.node_sphere[i] != -1) shell.first_block[i] = static_cast<std::int32_t>(shell.block_start.size());
+    for (std::int32_t begin = nodes[i].begin, end; begin < nodes[i].end; begin = end) {
+      const std::int32_t k = shell.point_sphere[static_cast<std::size_t>(begin)];
+      for (end = begin + 1; end < nodes[i].end && shell.point_sphere[static_cast<std::size_t>(end)] == k;) ++end;
+      cut_blocks(begin, end, k >= 0 ? block_size(dim) : end - begin, shell.block_start);
+      shell.block_sphere.resize(shell.block_start.size(), k);
+    }
   }
   shell.block_start.push_back(static_cast<std::int32_t>(n));
   const std::size_t blocks = shell.block_start.size() - 1;
@@ -463,12 +483,17 @@ void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spati
   std::vector<double> block_sum(d);
   for (std::size_t b = 0; b < blocks; ++b) {
     const std::int32_t begin = shell.block_start[b], end = shell.block_start[b + 1];
+    const auto first = shell.block_ids.begin() + begin, last = shell.block_ids.begin() + end;
+    std::iota(first, last, begin);
+    if (shell.block_sphere[b] < 0) {
+      shell.block_cone[b * stride + d] = -2.0;
+      for (std::int32_t i = begin; i < end; ++i) shell.block_offsets[static_cast<std::size_t>(i)] = 0.0;
+      continue;
+    }
     std::fill(block_sum.begin(), block_sum.end(), 0.0);
     for (auto id = static_cast<std::size_t>(begin); id < static_cast<std::size_t>(end); ++id)
       for (std::size_t k = 0; k < d; ++k) block_sum[k] += unit[id * d + k];
     fit_cone(unit, radius, dim, begin, end, block_sum.data(), &shell.block_cone[b * stride]);
-    const auto first = shell.block_ids.begin() + begin, last = shell.block_ids.begin() + end;
-    std::iota(first, last, begin);
     std::sort(first, last, [&](std::int32_t a, std::int32_t c) {
       const double sa = shell.offset[static_cast<std::size_t>(a)], sc = shell.offset[static_cast<std::size_t>(c)];
       return sa < sc || (sa == sc && a < c);
@@ -501,57 +526,323 @@ void minor_of(const double (&a)[N][N], const int* rows, const int* columns, doub
   }
 }
 
-}  // namespace
-
-SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree) {
-  SphereShell shell;
-  // A sample first: most inputs are not near a sphere, and this costs them a few thousand points.
+// One sphere (or concentric spheres) that most of the points lie near: sphere_of_most on a
+// sample first (most inputs are not near a sphere, and this costs them a few thousand points),
+// then the least-squares fit of all the points near that sphere, twice: the points far from it
+// are left out (a centre point, say, would pull the fit off by its distance over n: far more
+// than rounding), and the second fit sees the points the first one brings near. Most points
+// must then lie near it, or near one of the spheres about its centre that most of the sample
+// lies near.
+bool one_centre(const double* coords, std::int32_t n, int dim, Sphere& sphere) {
   Sample sample{coords, dim, {}, {}, 0.0};
   const std::int32_t stride = std::max<std::int32_t>(1, n / kSample);
   for (std::int32_t id = 0; id < n; id += stride) sample.ids.push_back(id);
   for (std::size_t i = 0; i < sample.ids.size(); i += 8) sample.sparse.push_back(sample.ids[i]);
   sample.extent2 = bounding_diagonal2(coords, dim, sample.ids);
-  Sphere sphere;
-  if (!sphere_of_most(sample, sphere)) return shell;
-  // Then the least-squares fit of all the points near that sphere, twice: the points far from
-  // it are left out (a centre point, say, would pull the fit off by its distance over n: far
-  // more than rounding), and the second fit sees the points the first one brings near. Most
-  // points must then lie near it, or near one of the spheres about its centre that most of the
-  // sample lies near.
+  if (!sphere_of_most(sample, sphere)) return false;
   std::vector<std::int32_t> all(static_cast<std::size_t>(n));
   std::iota(all.begin(), all.end(), 0);
   for (int pass = 0; pass < 2; ++pass) {
     const std::vector<std::int32_t> ids = near(coords, dim, all, sphere);
-    if (ids.size() < static_cast<std::size_t>(dim + 2) || !fit(coords, dim, ids, sphere)) return shell;
+    if (ids.size() < static_cast<std::size_t>(dim + 2) || !fit(coords, dim, ids, sphere)) return false;
   }
-  if (!mostly(near_any(coords, dim, all, sphere, spheres_about(coords, dim, sample.ids, sphere.centre)), static_cast<std::size_t>(n)))
-    return shell;
+  return mostly(near_any(coords, dim, all, sphere, spheres_about(coords, dim, sample.ids, sphere.centre)), static_cast<std::size_t>(n));
+}
 
-  // The points' offsets, then the nodes' ranges, leaves first (children follow their parent in
-  // preorder). An exact offset is within u |s| + eta of the computed s.
+// Spheres about several centres (bubbles; the cells of a foam), found patch by patch: a patch
+// is a kd-tree node of kLeastPatch to kPatchPoints points (contiguous ids, near each other), or
+// a part of a leaf down to kLeastPart points (the build orders a leaf's points by the same
+// halving splits), that most of its points lie near a sphere no wider than
+// kMaxRadiusOverExtent times its bounding box. The patches of one sphere are then grouped, and
+// each group's sphere refitted on all their points near it. The parts of leaves give a sphere
+// the points of the leaves that straddle two bubbles (bubbles3: 6% of the points were left in
+// no sphere, and the searches of their facets took 67% of the time in double-double tests).
+constexpr std::int32_t kPatchPoints = 512;
+constexpr std::int32_t kLeastPatch = 64;
+constexpr std::int32_t kLeastPart = spatial::KdTree::kOrderLeafSize;
+// Spheres tried per patch, each through dim + 2 of its points spread over its order: with 9 in
+// 10 of them near a sphere, one draw of up to 7 points (5D) misses it with odds below 1/2.
+constexpr int kPatchDraws = 4;
+// How many nodes of kPatchPoints points are tried (down to kLeastPatch) before all of them:
+// one must have a patch. Most inputs have none, and this caps their cost at a few thousand
+// points' tests.
+constexpr std::size_t kProbes = 32;
+
+struct Patch {
+  std::int32_t begin, end;  // a node's points, or a part of a leaf
+  Sphere sphere;
+  std::int32_t group = -1;
+};
+
+// A sphere that most of the points [begin, end) lie near, refitted on those points.
+bool patch_sphere(const double* coords, int dim, std::int32_t begin, std::int32_t end, Sphere& sphere) {
+  const std::int32_t count = end - begin;
+  if (count < dim + 2) return false;
+  std::vector<std::int32_t> ids, drawn(static_cast<std::size_t>(dim + 2)), spread;
+  for (int i = 0; i < 8; ++i) spread.push_back(begin + (2 * i + 1) * count / 16);
+  double widest2 = -1.0;
+  for (int draw = 0; draw < kPatchDraws; ++draw) {
+    const std::int32_t shift = draw * count / ((dim + 2) * kPatchDraws);
+    for (int j = 0; j < dim + 2; ++j) drawn[static_cast<std::size_t>(j)] = begin + (j * count / (dim + 2) + shift) % count;
+    // One pass of the fit, and eight points tested first: most patches tried are not near a
+    // sphere, and this is what they cost (uniform 2D, 50 000 points: the patches' search
+    // took 11.0 M instructions with two passes and the box first, 2.6% of the run).
+    if (!fit(coords, dim, drawn, sphere, 1) || spread.size() - near(coords, dim, spread, sphere).size() > 1) continue;
+    if (ids.empty()) {
+      ids.resize(static_cast<std::size_t>(count));
+      std::iota(ids.begin(), ids.end(), begin);
+      widest2 = kMaxRadiusOverExtent * kMaxRadiusOverExtent * bounding_diagonal2(coords, dim, ids);
+    }
+    if (!(sphere.radius2 <= widest2) || !mostly_near(coords, dim, ids, sphere)) continue;
+    if (fit(coords, dim, near(coords, dim, ids, sphere), sphere) && sphere.radius2 <= widest2 && mostly_near(coords, dim, ids, sphere))
+      return true;
+  }
+  return false;
+}
+
+// The patches among the points [begin, end) of a leaf: all of them, else those of each half,
+// down to `least` points.
+void find_parts(const double* coords, int dim, std::int32_t begin, std::int32_t end, std::int32_t least, std::vector<Patch>& patches) {
+  if (end - begin < least) return;
+  Sphere sphere;
+  if (patch_sphere(coords, dim, begin, end, sphere)) {
+    patches.push_back({begin, end, std::move(sphere)});
+    return;
+  }
+  const std::int32_t middle = begin + (end - begin) / 2;
+  find_parts(coords, dim, begin, middle, least, patches);
+  find_parts(coords, dim, middle, end, least, patches);
+}
+
+// The patches under `node`: the node itself when it is one, else those of its children, and
+// then the parts of its leaves, down to `least` points.
+void find_patches(const double* coords, int dim, const spatial::KdTree& tree, std::int32_t node, std::int32_t least,
+                  std::vector<Patch>& patches) {
+  const spatial::KdTree::Node& at = tree.nodes()[static_cast<std::size_t>(node)];
+  const std::int32_t count = at.end - at.begin;
+  if (count < least) return;
+  Sphere sphere;
+  if (count <= kPatchPoints && patch_sphere(coords, dim, at.begin, at.end, sphere)) {
+    patches.push_back({at.begin, at.end, std::move(sphere)});
+    return;
+  }
+  if (at.right >= 0) {
+    find_patches(coords, dim, tree, node + 1, least, patches);
+    find_patches(coords, dim, tree, at.right, least, patches);
+  } else {
+    const std::int32_t middle = at.begin + count / 2;
+    find_parts(coords, dim, at.begin, middle, least, patches);
+    find_parts(coords, dim, middle, at.end, least, patches);
+  }
+}
+
+// The nodes of at most kPatchPoints points whose parent has more (or leaves), in preorder.
+void patch_roots(const spatial::KdTree& tree, std::int32_t node, std::vector<std::int32_t>& roots) {
+  const spatial::KdTree::Node& at = tree.nodes()[static_cast<std::size_t>(node)];
+  if (at.end - at.begin <= kPatchPoints || at.right < 0) {
+    roots.push_back(node);
+    return;
+  }
+  patch_roots(tree, node + 1, roots);
+  patch_roots(tree, at.right, roots);
+}
+
+std::int32_t root_of(std::vector<std::int32_t>& parent, std::int32_t i) {
+  while (parent[static_cast<std::size_t>(i)] != i) i = parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+  return i;
+}
+
+// Whether two patches' spheres are one: centres within 4 kNear of the larger radius, squared
+// radii within 4 kNear (far looser than two caps of one sphere fit, far tighter than two
+// bubbles differ).
+bool same_sphere(const Sphere& a, const Sphere& b) {
+  const double r2 = std::max(a.radius2, b.radius2);
+  double apart2 = 0.0;
+  for (std::size_t k = 0; k < a.centre.size(); ++k) apart2 += (a.centre[k] - b.centre[k]) * (a.centre[k] - b.centre[k]);
+  return apart2 <= 16 * kNear * kNear * r2 && std::fabs(a.radius2 - b.radius2) <= 4 * kNear * r2;
+}
+
+void join_near_spheres(const double* coords, int dim, const std::vector<Sphere>& spheres, std::vector<std::int32_t>& point_sphere);
+
+// The spheres of the patches, each group of patches of one sphere refitted (twice, as in
+// one_centre) on all their points near it; a patch that is then not mostly near its group's
+// sphere is dropped. Each point of a patch is in its group's sphere if it lies near it (a patch
+// may hold a few points of another bubble), the groups with more points first; a sphere left
+// with few points is dropped; then the points left join a sphere they lie near
+// (join_near_spheres). False when no sphere is left.
+bool spheres_of_patches(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree, std::vector<Sphere>& spheres,
+                        std::vector<std::int32_t>& point_sphere) {
+  if (tree.nodes().empty()) return false;
+  std::vector<Patch> patches;
+  std::vector<std::int32_t> roots;
+  patch_roots(tree, 0, roots);
+  const std::size_t step = std::max<std::size_t>(1, roots.size() / kProbes);
+  for (std::size_t i = 0; i < roots.size() && patches.empty(); i += step) find_patches(coords, dim, tree, roots[i], kLeastPatch, patches);
+  if (patches.empty()) return false;
+  patches.clear();
+  for (std::int32_t root : roots) find_patches(coords, dim, tree, root, kLeastPart, patches);
+  // Group the patches: compared in the order of their centres' first coordinate, each with
+  // those whose first coordinate is near enough to be the same sphere.
+  const std::size_t m = patches.size();
+  std::vector<std::int32_t> order(m), parent(m);
+  std::iota(order.begin(), order.end(), 0);
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto first_coordinate = [&](std::int32_t i) { return patches[static_cast<std::size_t>(i)].sphere.centre[0]; };
+  std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) { return first_coordinate(a) < first_coordinate(b); });
+  for (std::size_t i = 0; i < m; ++i) {
+    const Sphere& a = patches[static_cast<std::size_t>(order[i])].sphere;
+    const double reach = 4 * kNear * std::sqrt(a.radius2) * (1 + 4 * kNear);
+    for (std::size_t j = i + 1; j < m && first_coordinate(order[j]) - first_coordinate(order[i]) <= reach * 2; ++j)
+      if (same_sphere(a, patches[static_cast<std::size_t>(order[j])].sphere))
+        parent[static_cast<std::size_t>(root_of(parent, order[i]))] = root_of(parent, order[j]);
+  }
+  std::vector<std::int32_t> group_of_root(m, -1);
+  std::vector<std::vector<std::int32_t>> members;
+  for (std::size_t i = 0; i < m; ++i) {
+    std::int32_t& group = group_of_root[static_cast<std::size_t>(root_of(parent, static_cast<std::int32_t>(i)))];
+    if (group < 0) {
+      group = static_cast<std::int32_t>(members.size());
+      members.emplace_back();
+    }
+    members[static_cast<std::size_t>(group)].push_back(static_cast<std::int32_t>(i));
+  }
+  for (const std::vector<std::int32_t>& group : members) {
+    Sphere sphere = patches[static_cast<std::size_t>(group.front())].sphere;
+    std::vector<std::int32_t> all;
+    for (std::int32_t i : group)
+      for (std::int32_t id = patches[static_cast<std::size_t>(i)].begin; id < patches[static_cast<std::size_t>(i)].end; ++id) all.push_back(id);
+    bool fitted = true;
+    for (int pass = 0; pass < 2 && fitted; ++pass) fitted = fit(coords, dim, near(coords, dim, all, sphere), sphere);
+    if (!fitted) continue;
+    const auto index = static_cast<std::int32_t>(spheres.size());
+    for (std::int32_t i : group) {
+      Patch& patch = patches[static_cast<std::size_t>(i)];
+      std::vector<std::int32_t> ids(static_cast<std::size_t>(patch.end - patch.begin));
+      std::iota(ids.begin(), ids.end(), patch.begin);
+      if (mostly_near(coords, dim, ids, sphere)) patch.group = index;
+    }
+    spheres.push_back(std::move(sphere));
+  }
+  std::vector<std::int64_t> group_points(spheres.size(), 0);
+  for (const Patch& patch : patches)
+    if (patch.group >= 0) group_points[static_cast<std::size_t>(patch.group)] += patch.end - patch.begin;
+  std::sort(patches.begin(), patches.end(), [&](const Patch& a, const Patch& b) {
+    const std::int64_t size_a = a.group >= 0 ? group_points[static_cast<std::size_t>(a.group)] : -1;
+    const std::int64_t size_b = b.group >= 0 ? group_points[static_cast<std::size_t>(b.group)] : -1;
+    return size_a != size_b ? size_a > size_b : a.begin < b.begin;
+  });
+  point_sphere.assign(static_cast<std::size_t>(n), -1);
+  for (const Patch& patch : patches) {
+    if (patch.group < 0) break;  // the dropped patches come last
+    const Sphere& sphere = spheres[static_cast<std::size_t>(patch.group)];
+    for (std::int32_t id = patch.begin; id < patch.end; ++id)
+      if (point_sphere[static_cast<std::size_t>(id)] < 0 && is_near(coords, dim, id, sphere)) point_sphere[static_cast<std::size_t>(id)] = patch.group;
+  }
+  // A sphere with fewer than kSpherePoints points is left out, its points free again, and the
+  // others renumbered: a patch may lie near a sphere that touches two bubbles where their arcs
+  // meet it (2D, 12 bubbles of 300 points: one, which the bubbles' own spheres left 4 points).
+  std::vector<std::int32_t> renumbered(spheres.size(), 0);
+  for (std::int32_t k : point_sphere)
+    if (k >= 0) ++renumbered[static_cast<std::size_t>(k)];
+  std::vector<Sphere> kept;
+  for (std::size_t k = 0; k < spheres.size(); ++k) {
+    if (renumbered[k] < static_cast<std::int32_t>(kSpherePoints)) {
+      renumbered[k] = -1;
+      continue;
+    }
+    renumbered[k] = static_cast<std::int32_t>(kept.size());
+    kept.push_back(std::move(spheres[k]));
+  }
+  for (std::int32_t& k : point_sphere)
+    if (k >= 0) k = renumbered[static_cast<std::size_t>(k)];
+  spheres = std::move(kept);
+  join_near_spheres(coords, dim, spheres, point_sphere);
+  return !spheres.empty();
+}
+
+// Points in no patch (in a block of a leaf that straddles two bubbles, say) join a sphere they
+// lie near, the first in the spheres' order. Even a few points left out cost much: the search
+// of a facet with one of them as a vertex has no form, and every point of the sphere in reach
+// is then a near-tie for the double-double test (bubbles3: 158 points in no sphere, 0.40 M
+// such tests). The spheres tried for a point are those whose centre's first coordinate is
+// within the largest radius of the point's (a binary search in that order).
+void join_near_spheres(const double* coords, int dim, const std::vector<Sphere>& spheres, std::vector<std::int32_t>& point_sphere) {
+  std::vector<std::int32_t> by_first(spheres.size());
+  std::iota(by_first.begin(), by_first.end(), 0);
+  const auto first = [&](std::int32_t k) { return spheres[static_cast<std::size_t>(k)].centre[0]; };
+  std::sort(by_first.begin(), by_first.end(), [&](std::int32_t a, std::int32_t b) { return first(a) < first(b) || (first(a) == first(b) && a < b); });
+  double widest = 0.0;
+  for (const Sphere& sphere : spheres) widest = std::max(widest, std::sqrt(sphere.radius2) * (1 + kNear));
+  for (std::size_t id = 0; id < point_sphere.size(); ++id) {
+    if (point_sphere[id] >= 0) continue;
+    const double x = coords[id * static_cast<std::size_t>(dim)];
+    auto it = std::lower_bound(by_first.begin(), by_first.end(), x - widest, [&](std::int32_t k, double v) { return first(k) < v; });
+    std::int32_t joined = -1;
+    for (; it != by_first.end() && first(*it) <= x + widest; ++it)
+      if (is_near(coords, dim, static_cast<std::int32_t>(id), spheres[static_cast<std::size_t>(*it)]) && (joined < 0 || *it < joined)) joined = *it;
+    point_sphere[id] = joined;
+  }
+}
+
+// The shell of the spheres, given each point's (-1: none). A node is in a sphere when all its
+// points are; a leaf with some, but not all, of its points in spheres is kParts.
+SphereShell shell_of(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree, const std::vector<Sphere>& spheres,
+                     std::vector<std::int32_t> point_sphere) {
+  SphereShell shell;
+  shell.dim = dim;
   const auto& nodes = tree.nodes();
-  shell.rho = sphere.radius2;
-  shell.offset.resize(static_cast<std::size_t>(n));
-  double largest = shell.rho;
+  shell.point_sphere = std::move(point_sphere);
+  shell.node_sphere.assign(nodes.size(), -1);
+  for (std::size_t i = nodes.size(); i-- > 0;) {  // children first: preorder backwards
+    const spatial::KdTree::Node& node = nodes[i];
+    std::int32_t& k = shell.node_sphere[i];
+    if (node.right < 0) {
+      const auto first = shell.point_sphere.begin() + node.begin, last = shell.point_sphere.begin() + node.end;
+      if (std::all_of(first, last, [&](std::int32_t j) { return j == *first; })) k = *first;
+      else if (std::any_of(first, last, [](std::int32_t j) { return j >= 0; })) k = SphereShell::kParts;
+    } else {
+      const std::int32_t left = shell.node_sphere[i + 1], right = shell.node_sphere[static_cast<std::size_t>(node.right)];
+      if (left >= 0 && left == right) k = left;
+    }
+  }
+
+  // The points' offsets, each about its sphere, and each sphere's error bound: an exact offset
+  // is within u |s| + eta of the computed s.
+  const auto d = static_cast<std::size_t>(dim);
+  for (const Sphere& sphere : spheres) {
+    shell.centres.insert(shell.centres.end(), sphere.centre.begin(), sphere.centre.end());
+    shell.rho.push_back(sphere.radius2);
+  }
+  std::vector<double> largest = shell.rho;
+  shell.offset.assign(static_cast<std::size_t>(n), 0.0);
   for (std::int32_t id = 0; id < n; ++id) {
+    const std::int32_t k = shell.point_sphere[static_cast<std::size_t>(id)];
+    if (k < 0) continue;
+    const auto at = static_cast<std::size_t>(k);
     double bound = 0.0;
     shell.offset[static_cast<std::size_t>(id)] =
-        sphere_offset(coords + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim), sphere.centre.data(), dim, shell.rho, bound);
-    largest = std::max(largest, bound);
+        sphere_offset(coords + static_cast<std::size_t>(id) * d, &shell.centres[at * d], dim, shell.rho[at], bound);
+    largest[at] = std::max(largest[at], bound);
   }
-  shell.eta = offset_error(dim) * largest;
-  if (!std::isfinite(shell.eta)) return SphereShell{};
-  shell.range.resize(2 * nodes.size());
+  for (double l : largest) {
+    shell.eta.push_back(offset_error(dim) * l);
+    if (!std::isfinite(shell.eta.back())) return SphereShell{};
+  }
+  // The nodes' ranges, leaves first (children follow their parent in preorder).
+  shell.range.assign(2 * nodes.size(), 0.0);
   for (std::size_t i = nodes.size(); i-- > 0;) {
     const spatial::KdTree::Node& node = nodes[i];
+    const std::int32_t k = shell.node_sphere[i];
+    if (k < 0) continue;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     if (node.right < 0) {
+      const double eta = shell.eta[static_cast<std::size_t>(k)];
       for (std::int32_t id = node.begin; id < node.end; ++id) {
         // Twice the bound: the subtraction and addition here round by at most u of their
         // results, which the second u |s| and eta cover.
         const double s = shell.offset[static_cast<std::size_t>(id)];
-        lo = std::min(lo, s - 2 * geometry::kUnitRoundoff * std::fabs(s) - 2 * shell.eta);
-        hi = std::max(hi, s + 2 * geometry::kUnitRoundoff * std::fabs(s) + 2 * shell.eta);
+        lo = std::min(lo, s - 2 * geometry::kUnitRoundoff * std::fabs(s) - 2 * eta);
+        hi = std::max(hi, s + 2 * geometry::kUnitRoundoff * std::fabs(s) + 2 * eta);
       }
     } else {
       const std::size_t left = i + 1, right = static_cast<std::size_t>(node.right);
@@ -561,9 +852,23 @@ SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, cons
     shell.range[2 * i] = lo;
     shell.range[2 * i + 1] = hi;
   }
-  fit_cones_and_blocks(coords, dim, nodes, sphere.centre, shell);
-  shell.centre = std::move(sphere.centre);
+  fit_cones_and_blocks(coords, dim, nodes, shell);
   return shell;
+}
+
+}  // namespace
+
+SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree) {
+  if (tree.nodes().empty()) return {};
+  std::vector<Sphere> spheres(1);
+  std::vector<std::int32_t> point_sphere;
+  if (one_centre(coords, n, dim, spheres.front())) {
+    point_sphere.assign(static_cast<std::size_t>(n), 0);  // every point, near one of the spheres or not
+  } else {
+    spheres.clear();
+    if (!spheres_of_patches(coords, n, dim, tree, spheres, point_sphere)) return {};
+  }
+  return shell_of(coords, n, dim, tree, spheres, std::move(point_sphere));
 }
 
 namespace {
@@ -618,7 +923,7 @@ void fill_facet_minors(const double (&a)[N][N], FacetMinors& minors) {
 // the facet's minors made once per facet (FacetMinors), 8D wins too (time_search 38.4 s with
 // GMP, 12.8 s in floating point, same run of a slower machine).
 template <int N>
-bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, const double* const* rows, const double* row_offsets,
+bool float_form_fixed(const ShellSphere& sphere, const double* f0, double s0, const double* const* rows, const double* row_offsets,
                       FloatForm& form, FacetMinors* minors) {
   constexpr int d = N;
   // With S_x = |x - g|^2 - rho, |x - f0|^2 = (S_x - S_0) - 2 (f0 - g) . (x - f0): the lift
@@ -640,7 +945,7 @@ bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, con
   //   K: the sum's roundings, the b and y0 errors, W's error and the offset S_0's error.
   // Each bound is evaluated with a margin for its own roundings.
   constexpr double u = geometry::kUnitRoundoff;
-  const double eta = shell.eta;
+  const double eta = sphere.eta;
   double a[N][N], sh[N], e[N];
   for (int i = 0; i < d; ++i) {
     const double* p = rows[i];
@@ -705,7 +1010,7 @@ bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, con
     w_tree += std::fabs(a[d - 1][c]) * tau[c][d - 1];
   }
   const double w_err = geometry::gamma_bound(geometry::laplace_roundings(d, 1)) * w_tree * margin;
-  const double* g = shell.centre.data();
+  const double* g = sphere.centre;
   double k = -w * s0, k_tree = std::fabs(w) * std::fabs(s0), k_err = 0.0;
   for (int c = 0; c < d; ++c) {
     const double y0 = f0[c] - g[c];
@@ -728,16 +1033,16 @@ bool float_form_fixed(const SphereShell& shell, const double* f0, double s0, con
 }
 }  // namespace
 
-bool float_form(const SphereShell& shell, int d, const double* f0, double s0, const double* const* rows, const double* row_offsets,
+bool float_form(const ShellSphere& sphere, int d, const double* f0, double s0, const double* const* rows, const double* row_offsets,
                 FloatForm& form, FacetMinors* minors) {
   switch (d) {
-    case 2: return float_form_fixed<2>(shell, f0, s0, rows, row_offsets, form, minors);
-    case 3: return float_form_fixed<3>(shell, f0, s0, rows, row_offsets, form, minors);
-    case 4: return float_form_fixed<4>(shell, f0, s0, rows, row_offsets, form, minors);
-    case 5: return float_form_fixed<5>(shell, f0, s0, rows, row_offsets, form, minors);
-    case 6: return float_form_fixed<6>(shell, f0, s0, rows, row_offsets, form, minors);
-    case 7: return float_form_fixed<7>(shell, f0, s0, rows, row_offsets, form, minors);
-    case 8: return float_form_fixed<8>(shell, f0, s0, rows, row_offsets, form, minors);
+    case 2: return float_form_fixed<2>(sphere, f0, s0, rows, row_offsets, form, minors);
+    case 3: return float_form_fixed<3>(sphere, f0, s0, rows, row_offsets, form, minors);
+    case 4: return float_form_fixed<4>(sphere, f0, s0, rows, row_offsets, form, minors);
+    case 5: return float_form_fixed<5>(sphere, f0, s0, rows, row_offsets, form, minors);
+    case 6: return float_form_fixed<6>(sphere, f0, s0, rows, row_offsets, form, minors);
+    case 7: return float_form_fixed<7>(sphere, f0, s0, rows, row_offsets, form, minors);
+    case 8: return float_form_fixed<8>(sphere, f0, s0, rows, row_offsets, form, minors);
     default: return false;
   }
 }

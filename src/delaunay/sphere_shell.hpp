@@ -27,8 +27,12 @@
 //
 // The bounds are sound for any g, but useful only when most points lie near a sphere, or near
 // a few spheres about one centre (a node's points then lie near one of them, and its range is
-// as thin), so the shell is built only then (a least-squares fit; see sphere_shell.cpp). It
-// changes which nodes are visited, never the point found.
+// as thin), so the shell is built only then (a least-squares fit; see sphere_shell.cpp). Else,
+// when patches of the tree (nodes of up to 512 points) lie near spheres about several centres
+// (bubbles, or the cells of a foam), each such sphere gets a shell of its own: its points'
+// offsets, and the ranges and cones of the nodes under its patches, are taken around it, and a
+// facet whose vertices all lie in one sphere's patches is searched with that sphere's form.
+// It changes which nodes are visited, never the point found.
 #pragma once
 
 #include <cstdint>
@@ -40,36 +44,58 @@ class KdTree;
 
 namespace drange::engine {
 
+// One sphere of the shell: its centre g (dim doubles), the squared radius rho its offsets are
+// taken from, and their error bound eta.
+struct ShellSphere {
+  const double* centre;
+  double rho;
+  double eta;
+};
+
 struct SphereShell {
-  std::vector<double> centre;  // g (dim doubles); empty when the input is not near a sphere
-  double rho = 0.0;            // the fitted squared radius
-  // Per point id: s = |x - g|^2 - rho, computed in double-double arithmetic and rounded, with
-  // | s - exact | <= u |s| + eta (u = 2^-53).
+  int dim = 0;
+  // The spheres: centres (dim doubles each), rho and eta each (see ShellSphere); none when the
+  // input is not near spheres. One for a sphere or concentric spheres.
+  std::vector<double> centres, rho, eta;
+  // Per point id and per kd-tree node: the sphere whose shell it is in, or -1 (a node under no
+  // patch, or above patches of different spheres), or kParts for a leaf whose points are not
+  // all in one sphere but some are (parts of it are patches; see its blocks).
+  static constexpr std::int32_t kParts = -2;
+  std::vector<std::int32_t> point_sphere, node_sphere;
+  // Per point id: s = |x - g|^2 - rho about its sphere, computed in double-double arithmetic
+  // and rounded, with | s - exact | <= u |s| + eta (u = 2^-53); 0 for a point in no sphere.
   std::vector<double> offset;
-  double eta = 0.0;
-  std::vector<double> range;  // per kd-tree node: bounds of the exact |x - g|^2 - rho over its points
-  // Per kd-tree node, a cone from g that holds its points, stride dim + 4: a unit axis m, then
-  // cos_lo (every point's exact direction y / |y|, y = x - g, has m . y >= cos_lo |y|), sin_hi
-  // (at least sqrt(1 - cos_lo^2), with a margin for m's rounding), and r_lo <= |y| <= r_hi.
-  // cos_lo is -2 where no such cone is narrower than a half-space (or a point is at g). On a
-  // sphere the node's points lie on an arc or a cap, which its box bounds loosely: the cone
-  // bounds the form's linear term over them tightly (facet_search.cpp, cone_linear_low).
+  std::vector<double> range;  // per kd-tree node in a sphere: bounds of the exact |x - g|^2 - rho over its points
+  // Per kd-tree node in a sphere, a cone from g that holds its points, stride dim + 4: a unit
+  // axis m, then cos_lo (every point's exact direction y / |y|, y = x - g, has m . y >= cos_lo
+  // |y|), sin_hi (at least sqrt(1 - cos_lo^2), with a margin for m's rounding), and r_lo <= |y|
+  // <= r_hi. cos_lo is -2 where no such cone is narrower than a half-space (or a point is at
+  // g), and for a node in no sphere. On a sphere the node's points lie on an arc or a cap,
+  // which its box bounds loosely: the cone bounds the form's linear term over them tightly
+  // (facet_search.cpp, cone_linear_low).
   std::vector<double> cone;
-  // Each leaf cut into blocks the way the build orders its points (halving down to 8 points
-  // in 3D, 32 from 4D, the whole leaf in 2D: near points; sphere_shell.cpp, block_size):
-  // block b is [block_start[b], block_start[b + 1]), a leaf's blocks start at
-  // first_block[leaf] (-1 for inner nodes); each block's cone (as `cone`), and its point ids
-  // by increasing offset (block_ids over the block's positions) with those offsets. The leaf scan tests, block by block, only the points whose
-  // offset can still beat the candidate (facet_search.cpp, scan_shell_leaf).
-  std::vector<std::int32_t> block_start, first_block;
+  // Each leaf cut into runs of points in one sphere (or in none), and each run into blocks the
+  // way the build orders its points (halving down to 8 points in 3D, 32 from 4D, the whole
+  // run in 2D: near points; sphere_shell.cpp, block_size): block b is [block_start[b],
+  // block_start[b + 1]), in sphere block_sphere[b], and a leaf's blocks start at
+  // first_block[leaf] (-1 for inner nodes and leaves in no sphere); each block's cone (as
+  // `cone`), and its point ids by increasing offset (block_ids over the block's positions)
+  // with those offsets. The leaf scan tests, block by block, only the points whose offset can
+  // still beat the candidate (facet_search.cpp, scan_shell_leaf).
+  std::vector<std::int32_t> block_start, first_block, block_sphere;
   std::vector<double> block_cone;
   std::vector<std::int32_t> block_ids;
   std::vector<double> block_offsets;
 
-  bool active() const { return !centre.empty(); }
+  bool active() const { return !rho.empty(); }
+  std::int32_t spheres() const { return static_cast<std::int32_t>(rho.size()); }
+  ShellSphere sphere(std::int32_t k) const {
+    const auto i = static_cast<std::size_t>(k);
+    return {&centres[i * static_cast<std::size_t>(dim)], rho[i], eta[i]};
+  }
   const double* of(std::int32_t node) const { return &range[2 * static_cast<std::size_t>(node)]; }
-  const double* cone_of(std::int32_t node) const { return &cone[static_cast<std::size_t>(node) * (centre.size() + 4)]; }
-  const double* block_cone_of(std::int32_t block) const { return &block_cone[static_cast<std::size_t>(block) * (centre.size() + 4)]; }
+  const double* cone_of(std::int32_t node) const { return &cone[static_cast<std::size_t>(node) * static_cast<std::size_t>(dim + 4)]; }
+  const double* block_cone_of(std::int32_t block) const { return &block_cone[static_cast<std::size_t>(block) * static_cast<std::size_t>(dim + 4)]; }
 };
 
 // The lifted determinant det[r_1; ...; r_d; r_x] (rows relative to f0, as in
@@ -95,13 +121,15 @@ struct FacetMinors {
   double sub[kFloatFormMaxDim - 1][kPairs][2];  // facet rows but i, columns but a pair: value, tree
   double top[kFloatFormMaxDim][2];              // all the facet rows, columns but c: value, tree
 };
-bool float_form(const SphereShell& shell, int d, const double* f0, double s0, const double* const* rows, const double* row_offsets,
+bool float_form(const ShellSphere& sphere, int d, const double* f0, double s0, const double* const* rows, const double* row_offsets,
                 FloatForm& form, FacetMinors* minors = nullptr);
 
 // The shell of `n` points of dimension `dim` (row-major, in the tree's order: node ranges are
-// point ids), or an inactive one unless 9 in 10 of them lie within a relative 2^-10 of the
-// fitted sphere's squared radius, or of the squared radius of one of at most 32 concentric
-// spheres (sphere_shell.cpp, spheres_in; the offsets are then around the smallest).
+// point ids), with one sphere when 9 in 10 of them lie within a relative 2^-10 of the fitted
+// sphere's squared radius, or of the squared radius of one of at most 32 concentric spheres
+// (sphere_shell.cpp, spheres_in; the offsets are then around the smallest); else with a sphere
+// per group of patches that 9 in 10 of their points lie so near (sphere_shell.cpp,
+// spheres_of_patches); else inactive.
 SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree);
 
 }  // namespace drange::engine

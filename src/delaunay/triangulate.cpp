@@ -217,6 +217,7 @@ Triangulation delaunay(PointsView input, const Options& options) {
   const int d = points.dim;
   const int width = d + 1;
   stats.distinct_points = static_cast<std::size_t>(points.size);
+  stats.shell_spheres = static_cast<std::size_t>(points.shell.spheres());
   stats.seconds_kdtree = seconds_since(start);
 
   auto phase = Clock::now();
