@@ -1,8 +1,8 @@
 #!/usr/bin/python3
-"""bench/degenerate_families.py: writes the eighteenth and nineteenth rounds' probe inputs
-(bench/RESULTS.md, "The eighteenth round", "The nineteenth round"): 20 000 points each (5 000
-for two_spheres4) on curved sets that are not one input sphere, where the direct search is
-weak, in Qhull's format, into a directory.
+"""bench/degenerate_families.py: writes the eighteenth to twentieth rounds' probe inputs
+(bench/RESULTS.md, "The eighteenth round" to "The twentieth round"): 20 000 points each (5 000
+for two_spheres4) on curved sets that are not one input sphere, and a terrain with a flat
+plateau, where the direct search is weak, in Qhull's format, into a directory.
 
     bench/degenerate_families.py DIR
 
@@ -58,6 +58,13 @@ def families(rng):
     yield "layers3", [[x * (6371 - 300 * k) for x in p] for k in range(8) for p in fibonacci]
     yield "polar_grid", [[r / 50 * math.cos(2 * math.pi * j / 400), r / 50 * math.sin(2 * math.pi * j / 400)]
                          for r in range(1, 51) for j in range(400)]
+    # The twentieth round's terrain (2.5D): half the points on a flat plateau at z = 0.3 (a
+    # coordinate no power of two divides), the rest on a wavy slope.
+    plateau = []
+    for _ in range(N):
+        x, y = rng.random(), rng.random()
+        plateau.append([x, y, 0.3 if x < 0.5 else 0.3 + 0.2 * (x - 0.5) * math.sin(7 * y)])
+    yield "plateau", plateau
 
 
 def main():

@@ -42,10 +42,11 @@ struct SearchOptions {
   // Query the candidate's ball itself (enlarged by its error bound), not only its bounding box
   // (2.4 approximates the sphere by a hypercube, "the rougher the larger d is").
   bool ball_query = true;
-  // On points near one sphere (cospherical up to rounding), also skip the kd-tree nodes whose
-  // points' offsets from that sphere prove them outside the candidate's sphere, where the ball
-  // cannot (every candidate's sphere is then the input sphere, within rounding), and decide
-  // points by the exact form of the test around the sphere's centre instead of GMP.
+  // On points near one sphere (cospherical up to rounding), or near a few concentric ones, or
+  // near spheres about several centres (bubbles), also skip the kd-tree nodes whose points'
+  // offsets from their sphere prove them outside the candidate's sphere, where the ball cannot
+  // (every candidate's sphere is then the facet's sphere, within rounding), and decide points
+  // by the exact form of the test around that sphere's centre instead of GMP.
   bool sphere_shell = true;
   // Which open facet is searched next (ours too: it changes the simplices' order, not the set).
   FacetOrder facet_order = FacetOrder::automatic;

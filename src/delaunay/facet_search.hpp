@@ -22,9 +22,9 @@
 // apexes of the last searches around the facet's vertices are tried first (seeds), so the
 // first query region is already small; points and nodes are tested against the candidate's
 // ball, not only its bounding box, and once there is a ball the closed side is no longer
-// tested per node (the ball leaves only a thin cap of it); on points near one sphere, where every
-// candidate's ball holds nearly all of them, nodes and points are decided by the lifted
-// determinant's exact form around that sphere's centre (sphere_shell.hpp).
+// tested per node (the ball leaves only a thin cap of it); on points near spheres, where every
+// candidate's ball of a facet on one of them holds nearly all its points, nodes and points are
+// decided by the lifted determinant's exact form around that sphere's centre (sphere_shell.hpp).
 //
 // The arithmetic is compiled for d = 2..8 (fixed-size loops) and once for any d; the same
 // template serves all (facet_search.cpp).

@@ -35,8 +35,8 @@ struct PointStore {
   // exact, and the search can prove some evaluations exact (facet_search.cpp).
   bool dyadic = false;
   int unit_exponent = 0;
-  // For points near one sphere: its centre g, each point's offset |x - g|^2 - rho and each
-  // kd-tree node's range of them (sphere_shell.hpp).
+  // For points near spheres: their centres g, each point's offset |x - g|^2 - rho from its
+  // sphere and each kd-tree node's range of them (sphere_shell.hpp).
   SphereShell shell;
 
   const double* point(std::int32_t id) const { return coords.data() + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim); }
