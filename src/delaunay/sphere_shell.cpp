@@ -10,6 +10,7 @@
 #include "geometry/double_double.hpp"
 #include "geometry/error_bound.hpp"
 #include "spatial/kdtree.hpp"
+#include "util/union_find.hpp"
 
 namespace drange::engine {
 
@@ -647,11 +648,6 @@ void patch_roots(const spatial::KdTree& tree, std::int32_t node, std::vector<std
   patch_roots(tree, at.right, roots);
 }
 
-std::int32_t root_of(std::vector<std::int32_t>& parent, std::int32_t i) {
-  while (parent[static_cast<std::size_t>(i)] != i) i = parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-  return i;
-}
-
 // Whether two patches' spheres are one: centres within 4 kNear of the larger radius, squared
 // radii within 4 kNear (far looser than two caps of one sphere fit, far tighter than two
 // bubbles differ).
@@ -684,9 +680,9 @@ bool spheres_of_patches(const double* coords, std::int32_t n, int dim, const spa
   // Group the patches: compared in the order of their centres' first coordinate, each with
   // those whose first coordinate is near enough to be the same sphere.
   const std::size_t m = patches.size();
-  std::vector<std::int32_t> order(m), parent(m);
+  std::vector<std::int32_t> order(m);
   std::iota(order.begin(), order.end(), 0);
-  std::iota(parent.begin(), parent.end(), 0);
+  util::UnionFind sets(m);
   const auto first_coordinate = [&](std::int32_t i) { return patches[static_cast<std::size_t>(i)].sphere.centre[0]; };
   std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) { return first_coordinate(a) < first_coordinate(b); });
   for (std::size_t i = 0; i < m; ++i) {
@@ -694,12 +690,12 @@ bool spheres_of_patches(const double* coords, std::int32_t n, int dim, const spa
     const double reach = 4 * kNear * std::sqrt(a.radius2) * (1 + 4 * kNear);
     for (std::size_t j = i + 1; j < m && first_coordinate(order[j]) - first_coordinate(order[i]) <= reach * 2; ++j)
       if (same_sphere(a, patches[static_cast<std::size_t>(order[j])].sphere))
-        parent[static_cast<std::size_t>(root_of(parent, order[i]))] = root_of(parent, order[j]);
+        sets.unite(static_cast<std::size_t>(order[i]), static_cast<std::size_t>(order[j]));
   }
   std::vector<std::int32_t> group_of_root(m, -1);
   std::vector<std::vector<std::int32_t>> members;
   for (std::size_t i = 0; i < m; ++i) {
-    std::int32_t& group = group_of_root[static_cast<std::size_t>(root_of(parent, static_cast<std::int32_t>(i)))];
+    std::int32_t& group = group_of_root[sets.find(i)];
     if (group < 0) {
       group = static_cast<std::int32_t>(members.size());
       members.emplace_back();
