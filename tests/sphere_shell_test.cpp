@@ -265,6 +265,37 @@ TEST(SphereShell, OffsetsAndNodeRangesBoundTheExactOffsets) {
   }
 }
 
+TEST(SphereShell, ConcentricClustersBoundTheirPointsExactly) {
+  // Each node's two clusters (near the smallest sphere, the rest) hold the exact offset and
+  // |y| of each of its points, by the point's side of cluster_split; and nodes that mix the
+  // two spheres exist (the case the clusters are for).
+  for (int d : {2, 3, 4}) {
+    const auto store = store_of(concentric(1500, d, 60 + static_cast<std::uint64_t>(d), {1.0, 0.5}, 0.25));
+    const drange::engine::SphereShell& shell = store.shell;
+    ASSERT_TRUE(shell.active()) << "d=" << d;
+    ASSERT_FALSE(shell.clusters.empty()) << "d=" << d;
+    const std::vector<double> g = centre_of(shell);
+    std::size_t mixed = 0;
+    const auto& nodes = store.tree.nodes();
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const double* clusters = shell.clusters_of(static_cast<std::int32_t>(i));
+      mixed += clusters[0] <= clusters[1] && clusters[4] <= clusters[5];
+      for (std::int32_t id = nodes[i].begin; id < nodes[i].end; ++id) {
+        const double* cluster = clusters + (shell.offset[static_cast<std::size_t>(id)] < shell.cluster_split ? 0 : 4);
+        const mpq_class offset = exact_offset(store.point(id), g.data(), d, shell.rho[0]);
+        const mpq_class y2 = offset + mpq_class(shell.rho[0]);
+        ASSERT_LE(mpq_class(cluster[0]), offset) << "d=" << d << " node " << i;
+        ASSERT_GE(mpq_class(cluster[1]), offset) << "d=" << d << " node " << i;
+        ASSERT_LE(mpq_class(cluster[2]) * mpq_class(cluster[2]), y2) << "d=" << d << " node " << i;
+        ASSERT_GE(mpq_class(cluster[3]) * mpq_class(cluster[3]), y2) << "d=" << d << " node " << i;
+      }
+    }
+    EXPECT_GT(mixed, 0u) << "d=" << d;
+  }
+  // One sphere: no clusters.
+  EXPECT_TRUE(store_of(sphere(2000, 3, 11)).shell.clusters.empty());
+}
+
 TEST(SphereShell, ConesHoldTheirPointsExactly) {
   // For every node and block with a cone: each point's exact y = x - g has m . y >= cos_lo |y| and
   // r_lo <= |y| <= r_hi, and sin_hi^2 >= 1 - cos_lo^2 / |m|^2 (the rim's sine for m as stored).

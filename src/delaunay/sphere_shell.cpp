@@ -461,6 +461,41 @@ void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spati
     }
     fit_cone(unit, radius, dim, node.begin, node.end, s, cone);
   }
+  // The clusters of concentric spheres (SphereShell::clusters), leaves first, with the margins
+  // of the nodes' ranges (below) and of fit_cone's radii.
+  if (shell.cluster_split > 0.0) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    const double u = geometry::kUnitRoundoff;
+    shell.clusters.assign(nodes.size() * 8, 0.0);
+    for (std::size_t i = nodes.size(); i-- > 0;) {
+      double* c = &shell.clusters[i * 8];
+      for (int part = 0; part < 2; ++part) {
+        c[4 * part] = c[4 * part + 2] = kInf;
+        c[4 * part + 1] = c[4 * part + 3] = -kInf;
+      }
+      const std::int32_t k = shell.node_sphere[i];
+      if (k < 0) continue;
+      const spatial::KdTree::Node& node = nodes[i];
+      if (node.right < 0) {
+        const double eta = shell.eta[static_cast<std::size_t>(k)];
+        for (auto id = static_cast<std::size_t>(node.begin); id < static_cast<std::size_t>(node.end); ++id) {
+          const double s = shell.offset[id];
+          double* part = c + (s < shell.cluster_split ? 0 : 4);
+          part[0] = std::min(part[0], s - 2 * u * std::fabs(s) - 2 * eta);
+          part[1] = std::max(part[1], s + 2 * u * std::fabs(s) + 2 * eta);
+          part[2] = std::min(part[2], radius[id] * (1 - (dim + 4) * u));
+          part[3] = std::max(part[3], radius[id] * (1 + (dim + 4) * u));
+        }
+      } else {
+        const double* left = &shell.clusters[(i + 1) * 8];
+        const double* right = &shell.clusters[static_cast<std::size_t>(node.right) * 8];
+        for (int j = 0; j < 8; j += 2) {
+          c[j] = std::min(left[j], right[j]);
+          c[j + 1] = std::max(left[j + 1], right[j + 1]);
+        }
+      }
+    }
+  }
   // The blocks, leaf by leaf and run by run: preorder lists the leaves by position (a left
   // child's points come first), so block_start increases. A run in no sphere is one block,
   // without a cone.
@@ -534,7 +569,7 @@ void minor_of(const double (&a)[N][N], const int* rows, const int* columns, doub
 // than rounding), and the second fit sees the points the first one brings near. Most points
 // must then lie near it, or near one of the spheres about its centre that most of the sample
 // lies near.
-bool one_centre(const double* coords, std::int32_t n, int dim, Sphere& sphere) {
+bool one_centre(const double* coords, std::int32_t n, int dim, Sphere& sphere, std::vector<double>& radii2) {
   Sample sample{coords, dim, {}, {}, 0.0};
   const std::int32_t stride = std::max<std::int32_t>(1, n / kSample);
   for (std::int32_t id = 0; id < n; id += stride) sample.ids.push_back(id);
@@ -547,7 +582,8 @@ bool one_centre(const double* coords, std::int32_t n, int dim, Sphere& sphere) {
     const std::vector<std::int32_t> ids = near(coords, dim, all, sphere);
     if (ids.size() < static_cast<std::size_t>(dim + 2) || !fit(coords, dim, ids, sphere)) return false;
   }
-  return mostly(near_any(coords, dim, all, sphere, spheres_about(coords, dim, sample.ids, sphere.centre)), static_cast<std::size_t>(n));
+  radii2 = spheres_about(coords, dim, sample.ids, sphere.centre);
+  return mostly(near_any(coords, dim, all, sphere, radii2), static_cast<std::size_t>(n));
 }
 
 // Spheres about several centres (bubbles; the cells of a foam), found patch by patch: a patch
@@ -783,9 +819,10 @@ void join_near_spheres(const double* coords, int dim, const std::vector<Sphere>&
 // The shell of the spheres, given each point's (-1: none). A node is in a sphere when all its
 // points are; a leaf with some, but not all, of its points in spheres is kParts.
 SphereShell shell_of(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree, const std::vector<Sphere>& spheres,
-                     std::vector<std::int32_t> point_sphere) {
+                     std::vector<std::int32_t> point_sphere, double cluster_split) {
   SphereShell shell;
   shell.dim = dim;
+  shell.cluster_split = cluster_split;
   const auto& nodes = tree.nodes();
   shell.point_sphere = std::move(point_sphere);
   shell.node_sphere.assign(nodes.size(), -1);
@@ -858,13 +895,17 @@ SphereShell fit_sphere_shell(const double* coords, std::int32_t n, int dim, cons
   if (tree.nodes().empty()) return {};
   std::vector<Sphere> spheres(1);
   std::vector<std::int32_t> point_sphere;
-  if (one_centre(coords, n, dim, spheres.front())) {
+  std::vector<double> radii2;  // of the concentric spheres, smallest first
+  double cluster_split = 0.0;
+  if (one_centre(coords, n, dim, spheres.front(), radii2)) {
     point_sphere.assign(static_cast<std::size_t>(n), 0);  // every point, near one of the spheres or not
+    // Offsets from the smallest sphere: about 0 on it, about radii2[1] - radii2[0] on the next.
+    if (radii2.size() > 1) cluster_split = 0.5 * (radii2[1] - radii2[0]);
   } else {
     spheres.clear();
     if (!spheres_of_patches(coords, n, dim, tree, spheres, point_sphere)) return {};
   }
-  return shell_of(coords, n, dim, tree, spheres, std::move(point_sphere));
+  return shell_of(coords, n, dim, tree, spheres, std::move(point_sphere), cluster_split);
 }
 
 namespace {

@@ -86,6 +86,15 @@ struct SphereShell {
   std::vector<double> block_cone;
   std::vector<std::int32_t> block_ids;
   std::vector<double> block_offsets;
+  // Concentric spheres: each node's points in two clusters, those near the smallest sphere
+  // (offset below cluster_split) and the rest, each with bounds of its exact offsets and of
+  // its |y| (stride 8: s_lo, s_hi, r_lo, r_hi for each; an empty cluster has s_lo > s_hi). A
+  // node that holds points of two spheres has a range of offsets and of radii over both, which
+  // prunes nothing in the search of the cell inside the smallest; per cluster they are as thin
+  // as a node's on one sphere (facet_search.cpp, shell_prunes). Empty for one sphere and for
+  // spheres about several centres.
+  double cluster_split = 0.0;
+  std::vector<double> clusters;
 
   bool active() const { return !rho.empty(); }
   std::int32_t spheres() const { return static_cast<std::int32_t>(rho.size()); }
@@ -95,6 +104,7 @@ struct SphereShell {
   }
   const double* of(std::int32_t node) const { return &range[2 * static_cast<std::size_t>(node)]; }
   const double* cone_of(std::int32_t node) const { return &cone[static_cast<std::size_t>(node) * static_cast<std::size_t>(dim + 4)]; }
+  const double* clusters_of(std::int32_t node) const { return &clusters[8 * static_cast<std::size_t>(node)]; }
   const double* block_cone_of(std::int32_t block) const { return &block_cone[static_cast<std::size_t>(block) * static_cast<std::size_t>(dim + 4)]; }
 };
 
