@@ -420,6 +420,50 @@ void cut_blocks(std::int32_t begin, std::int32_t end, std::int32_t size, std::ve
 // 0.300 / 0.288 / 0.342 / 0.564 s; 5D, 1 500 points, 8 / 32: 3.02 / 2.95 s.
 std::int32_t block_size(int dim) { return dim == 2 ? std::numeric_limits<std::int32_t>::max() : dim == 3 ? spatial::KdTree::kOrderLeafSize : 32; }
 
+// Widens [lo, hi] to hold the exact offset of a point whose computed offset is s (error
+// bound u |s| + eta): twice the bound, since the subtraction and addition here round by at
+// most u of their results, which the second u |s| and eta cover.
+void widen_offset(double s, double eta, double& lo, double& hi) {
+  const double margin = 2 * geometry::kUnitRoundoff * std::fabs(s) + 2 * eta;
+  lo = std::min(lo, s - margin);
+  hi = std::max(hi, s + margin);
+}
+
+// The clusters of concentric spheres (SphereShell::clusters), leaves first, with the margins
+// of the nodes' ranges (widen_offset) and of fit_cone's radii; `radius` is each point's |y|.
+void fit_clusters(const std::vector<spatial::KdTree::Node>& nodes, const std::vector<double>& radius, int dim, SphereShell& shell) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double u = geometry::kUnitRoundoff;
+  shell.clusters.assign(nodes.size() * 8, 0.0);
+  for (std::size_t i = nodes.size(); i-- > 0;) {
+    double* c = &shell.clusters[i * 8];
+    for (int part = 0; part < 2; ++part) {
+      c[4 * part] = c[4 * part + 2] = kInf;
+      c[4 * part + 1] = c[4 * part + 3] = -kInf;
+    }
+    const std::int32_t k = shell.node_sphere[i];
+    if (k < 0) continue;
+    const spatial::KdTree::Node& node = nodes[i];
+    if (node.right < 0) {
+      const double eta = shell.eta[static_cast<std::size_t>(k)];
+      for (auto id = static_cast<std::size_t>(node.begin); id < static_cast<std::size_t>(node.end); ++id) {
+        const double s = shell.offset[id];
+        double* part = c + (s < shell.cluster_split ? 0 : 4);
+        widen_offset(s, eta, part[0], part[1]);
+        part[2] = std::min(part[2], radius[id] * (1 - (dim + 4) * u));
+        part[3] = std::max(part[3], radius[id] * (1 + (dim + 4) * u));
+      }
+    } else {
+      const double* left = &shell.clusters[(i + 1) * 8];
+      const double* right = &shell.clusters[static_cast<std::size_t>(node.right) * 8];
+      for (int j = 0; j < 8; j += 2) {
+        c[j] = std::min(left[j], right[j]);
+        c[j + 1] = std::max(left[j + 1], right[j + 1]);
+      }
+    }
+  }
+}
+
 // The nodes' cones, the blocks and their cones, and the blocks' points by offset: each about
 // its sphere's centre, for the nodes and leaves in a sphere (SphereShell::node_sphere).
 void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spatial::KdTree::Node>& nodes, SphereShell& shell) {
@@ -461,41 +505,7 @@ void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spati
     }
     fit_cone(unit, radius, dim, node.begin, node.end, s, cone);
   }
-  // The clusters of concentric spheres (SphereShell::clusters), leaves first, with the margins
-  // of the nodes' ranges (below) and of fit_cone's radii.
-  if (shell.cluster_split > 0.0) {
-    constexpr double kInf = std::numeric_limits<double>::infinity();
-    const double u = geometry::kUnitRoundoff;
-    shell.clusters.assign(nodes.size() * 8, 0.0);
-    for (std::size_t i = nodes.size(); i-- > 0;) {
-      double* c = &shell.clusters[i * 8];
-      for (int part = 0; part < 2; ++part) {
-        c[4 * part] = c[4 * part + 2] = kInf;
-        c[4 * part + 1] = c[4 * part + 3] = -kInf;
-      }
-      const std::int32_t k = shell.node_sphere[i];
-      if (k < 0) continue;
-      const spatial::KdTree::Node& node = nodes[i];
-      if (node.right < 0) {
-        const double eta = shell.eta[static_cast<std::size_t>(k)];
-        for (auto id = static_cast<std::size_t>(node.begin); id < static_cast<std::size_t>(node.end); ++id) {
-          const double s = shell.offset[id];
-          double* part = c + (s < shell.cluster_split ? 0 : 4);
-          part[0] = std::min(part[0], s - 2 * u * std::fabs(s) - 2 * eta);
-          part[1] = std::max(part[1], s + 2 * u * std::fabs(s) + 2 * eta);
-          part[2] = std::min(part[2], radius[id] * (1 - (dim + 4) * u));
-          part[3] = std::max(part[3], radius[id] * (1 + (dim + 4) * u));
-        }
-      } else {
-        const double* left = &shell.clusters[(i + 1) * 8];
-        const double* right = &shell.clusters[static_cast<std::size_t>(node.right) * 8];
-        for (int j = 0; j < 8; j += 2) {
-          c[j] = std::min(left[j], right[j]);
-          c[j + 1] = std::max(left[j + 1], right[j + 1]);
-        }
-      }
-    }
-  }
+  if (shell.cluster_split > 0.0) fit_clusters(nodes, radius, dim, shell);
   // The blocks, leaf by leaf and run by run: preorder lists the leaves by position (a left
   // child's points come first), so block_start increases. A run in no sphere is one block,
   // without a cone.
@@ -739,7 +749,6 @@ void join_near_spheres(const double* coords, int dim, const std::vector<Sphere>&
 // (join_near_spheres). False when no sphere is left.
 bool spheres_of_patches(const double* coords, std::int32_t n, int dim, const spatial::KdTree& tree, std::vector<Sphere>& spheres,
                         std::vector<std::int32_t>& point_sphere) {
-  if (tree.nodes().empty()) return false;
   std::vector<Patch> patches;
   std::vector<std::int32_t> roots;
   patch_roots(tree, 0, roots);
@@ -905,13 +914,7 @@ SphereShell shell_of(const double* coords, std::int32_t n, int dim, const spatia
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     if (node.right < 0) {
       const double eta = shell.eta[static_cast<std::size_t>(k)];
-      for (std::int32_t id = node.begin; id < node.end; ++id) {
-        // Twice the bound: the subtraction and addition here round by at most u of their
-        // results, which the second u |s| and eta cover.
-        const double s = shell.offset[static_cast<std::size_t>(id)];
-        lo = std::min(lo, s - 2 * geometry::kUnitRoundoff * std::fabs(s) - 2 * eta);
-        hi = std::max(hi, s + 2 * geometry::kUnitRoundoff * std::fabs(s) + 2 * eta);
-      }
+      for (std::int32_t id = node.begin; id < node.end; ++id) widen_offset(shell.offset[static_cast<std::size_t>(id)], eta, lo, hi);
     } else {
       const std::size_t left = i + 1, right = static_cast<std::size_t>(node.right);
       lo = std::min(shell.range[2 * left], shell.range[2 * right]);

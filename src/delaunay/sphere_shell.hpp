@@ -28,10 +28,11 @@
 // The bounds are sound for any g, but useful only when most points lie near a sphere, or near
 // a few spheres about one centre (a node's points then lie near one of them, and its range is
 // as thin), so the shell is built only then (a least-squares fit; see sphere_shell.cpp). Else,
-// when patches of the tree (nodes of up to 512 points) lie near spheres about several centres
-// (bubbles, or the cells of a foam), each such sphere gets a shell of its own: its points'
-// offsets, and the ranges and cones of the nodes under its patches, are taken around it, and a
-// facet whose vertices all lie in one sphere's patches is searched with that sphere's form.
+// when patches of the tree (nodes of up to 512 points, parts of leaves) lie near spheres about
+// several centres (bubbles, or the cells of a foam), each such sphere gets a shell of its own:
+// each point near it is in it, its offset taken around it, and so are the ranges and cones of
+// the nodes whose points are all in it; a facet whose vertices are all in one sphere is
+// searched with that sphere's form.
 // It changes which nodes are visited, never the point found.
 #pragma once
 
