@@ -48,14 +48,19 @@ struct SearchOptions {
   // (every candidate's sphere is then the facet's sphere, within rounding), and decide points
   // by the exact form of the test around that sphere's centre instead of GMP.
   bool sphere_shell = true;
+  // Remember the points that an exact evaluation proved on a facet's hyperplane or on a
+  // candidate's sphere, and skip the exact evaluation when a later search meets a subset of them
+  // again (ties that no floating-point filter decides: exactly cospherical points whose
+  // coordinates are not dyadic, as in a grid in cylindrical coordinates).
+  bool remember_ties = true;
   // Which open facet is searched next (ours too: it changes the simplices' order, not the set).
   FacetOrder facet_order = FacetOrder::automatic;
 };
 
 // Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order",
 // "paper" (the paper's three steps and nothing else, FIFO order), "no-bottom-up", "no-seed",
-// "no-ball", "no-shell", "fifo" (full with the paper's FIFO facet order in every dimension),
-// "spatial" (full with the spatial facet order in every dimension).
+// "no-ball", "no-shell", "no-tie-memory", "fifo" (full with the paper's FIFO facet order in
+// every dimension), "spatial" (full with the spatial facet order in every dimension).
 // Throws UsageError naming the unknown value.
 SearchOptions search_variant(const std::string& name);
 // The names accepted by search_variant, for help texts.

@@ -12,6 +12,7 @@
 #include <iterator>
 #include <limits>
 
+#include "delaunay/known_ties.hpp"
 #include "delaunay/leaf_blocks.hpp"
 #include "geometry/error_bound.hpp"
 #include "geometry/minors.hpp"
@@ -157,6 +158,11 @@ class SearchKernel final : public FacetSearch::Kernel {
   void set_candidate(std::int32_t id);
   bool on_open_side(std::int32_t id);
   bool beats_candidate(std::int32_t id);
+  // The signs of sigma O(x) and sigma I(p, x) whose filters failed, exactly: zero when a known
+  // tie says so, else from GMP, which teaches the known ties its zeros; the lifted sign's ties
+  // broken by the perturbation. rows_ holds x (and p) already; I(p, x) also needs ranks_.
+  int exact_open_side(std::int32_t id);
+  int exact_beats(std::int32_t id);
   void reset_box();
   // SphereShell (sphere_shell.hpp): the candidate's form around the shell's centre, and the
   // tests that use it: a point's sign of sigma I(p, x) (0 when undecided), and a node's proof
@@ -294,6 +300,10 @@ class SearchKernel final : public FacetSearch::Kernel {
   double inverse_d_;
   std::array<const double*, kMaxRow> rows_{};  // f_1, ..., f_{d-1}, p, q for the exact predicates
   std::array<std::int64_t, kMaxRow + 1> ranks_{};  // ranks of f_0, ..., f_{d-1}, p, q
+  // The points that GMP proved on a facet's hyperplane (on_open_side) or on a candidate's
+  // sphere (beats_candidate), remembered for the neighbouring facets' searches, which meet the
+  // same ties (SearchOptions::remember_ties).
+  KnownTies plane_ties_, sphere_ties_;
 
   // Per candidate.
   std::int32_t candidate_ = -1;
@@ -359,6 +369,8 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       box_orient_gamma_(orient_gamma_ + 2.01 * geometry::gamma_bound(geometry::laplace_roundings(points.dim - 1, 1))),
       minors_(points.dim + 1),
       inverse_d_(1.0 / points.dim),
+      plane_ties_(points.dim, points.size),
+      sphere_ties_(points.dim + 1, points.size),
       seeds_(seeds),
       blocks_(points.blocks) {
   if (options.use_kdtree && options.sphere_shell && points.shell.active()) {
@@ -827,11 +839,41 @@ bool SearchKernel<D>::on_open_side(std::int32_t id) {
   int s = orientation_sign(o, o_abs, orient_gamma_);
   if (s == 0) {
     rows_[static_cast<std::size_t>(d - 1)] = points_.point(id);
-    const geometry::Frame frame{d, d, nullptr, f0_};
-    s = sigma_ * geometry::orientation(frame, rows_.data());
+    s = exact_open_side(id);
     if (candidate_ >= 0) rows_[static_cast<std::size_t>(d - 1)] = points_.point(candidate_);
   }
   return s > 0;
+}
+
+template <int D>
+int SearchKernel<D>::exact_open_side(std::int32_t id) {
+  const int d = dim();
+  const geometry::Frame frame{d, d, nullptr, f0_};
+  if (const std::optional<int> s = geometry::filtered_orientation(frame, rows_.data())) return sigma_ * *s;
+  if (!options_.remember_ties) return sigma_ * geometry::exact_orientation(frame, rows_.data());
+  // The facet's vertices are affinely independent: they define its hyperplane.
+  if (plane_ties_.holds(facet_, id)) return 0;
+  const int s = geometry::exact_orientation(frame, rows_.data());
+  if (s == 0) plane_ties_.record(facet_, id);
+  return sigma_ * s;
+}
+
+template <int D>
+int SearchKernel<D>::exact_beats(std::int32_t id) {
+  const int d = dim();
+  const geometry::Frame frame{d, d, nullptr, f0_};
+  if (!options_.remember_ties) return sigma_ * geometry::exact_lifted_sign_perturbed(frame, rows_.data(), ranks_.data());
+  // The facet and the candidate, strictly on its open side, are affinely independent: they
+  // define the candidate's sphere.
+  std::array<std::int32_t, kMaxRow + 1> simplex;
+  std::copy(facet_, facet_ + d, simplex.begin());
+  simplex[static_cast<std::size_t>(d)] = candidate_;
+  if (!sphere_ties_.holds(simplex.data(), id)) {
+    const int s = geometry::exact_lifted_sign(frame, rows_.data());
+    if (s != 0) return sigma_ * s;
+    sphere_ties_.record(simplex.data(), id);
+  }
+  return sigma_ * geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data());
 }
 
 template <int D>
@@ -857,7 +899,7 @@ bool SearchKernel<D>::beats_candidate(std::int32_t id) {
     if (candidate_exact_ && v_abs < exact_limits_[static_cast<std::size_t>(d + 2)])
       s = v != 0.0 ? (v > 0 ? 1 : -1) : sigma_ * geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data());
     else if (filters_hold_)  // the filter above was sound and failed: a near-tie, for GMP
-      s = sigma_ * geometry::exact_lifted_sign_perturbed(frame, rows_.data(), ranks_.data());
+      s = exact_beats(id);
     else
       s = sigma_ * geometry::lifted_sign_perturbed(frame, rows_.data(), ranks_.data());
   }

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 namespace drange::geometry {
 
@@ -33,6 +34,11 @@ struct Frame {
 // Sign of det [pi(p_1 - base); ...; pi(p_k - base)]  (k rows, k columns).
 // For frame.k == dim and base = p_0 this is the orientation of the simplex (p_0, ..., p_k).
 int orientation(const Frame& frame, const double* const* points);
+// orientation in its two stages, for a caller that can learn a zero from elsewhere before it
+// pays for GMP (delaunay/known_ties.hpp): the floating-point filters and the exactness proofs
+// (nullopt when they cannot decide), then the exact evaluation alone.
+std::optional<int> filtered_orientation(const Frame& frame, const double* const* points);
+int exact_orientation(const Frame& frame, const double* const* points);
 
 // Sign of the (k+1)x(k+1) determinant with rows [pi(p_i - base), |p_i - base|^2], i = 1..k+1.
 // Unperturbed: zero when the k+2 points (base and the k+1 given) are cospherical.
@@ -51,6 +57,9 @@ int lifted_tie_sign(const Frame& frame, const double* const* points, const std::
 // decide either (2 000 points on a sphere: not once in 1.26M evaluations). The double-double
 // stage and GMP decide.
 int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points, const std::int64_t* ranks);
+// Its unperturbed sign (the double-double stage, then GMP), for a caller that breaks the ties
+// itself with lifted_tie_sign.
+int exact_lifted_sign(const Frame& frame, const double* const* points);
 
 // The lifted determinant det[r_1; ...; r_k; r_x] (frame.k == frame.dim, rows relative to
 // frame.base as in lifted_sign) as a function of its last point x, written around a centre g
