@@ -89,6 +89,51 @@ TEST(RefinedSign, AgreesWithTheRationalReferenceOnNearSphericalPoints) {
   }
 }
 
+TEST(RefinedSign, CofactorsDecideAsTheWholeDeterminantWithTheTestedRowFirst) {
+  // One candidate's rows, many tested points near its sphere: RefinedCofactors gives what
+  // refined_lifted_sign gives on the rows with the tested point's first (the same operations),
+  // sign-corrected for the move, and that is the exact sign whenever it decides.
+  for (int d = 2; d <= 4; ++d) {
+    for (const double centre : {0.0, 0.3}) {
+      TestRandom random(static_cast<std::uint64_t>(d * 77) + (centre != 0.0));
+      std::vector<std::vector<double>> points;
+      for (int i = 0; i < d + 1; ++i) points.push_back(on_sphere(random, d, centre, 1.0, 0.0));
+      std::vector<const double*> rows;
+      for (int i = 1; i < d + 1; ++i) rows.push_back(points[static_cast<std::size_t>(i)].data());
+      const Frame frame{d, d, nullptr, points[0].data()};
+      geometry::RefinedCofactors cofactors;
+      cofactors.prepare(frame, rows.data());
+      int decided = 0;
+      for (int trial = 0; trial < 300; ++trial) {
+        const double nudge = trial % 3 == 0 ? 0.0 : (trial % 3 == 1 ? 0x1p-40 : -0x1p-48);
+        const std::vector<double> x = on_sphere(random, d, centre, 1.0, nudge);
+        SCOPED_TRACE("d=" + std::to_string(d) + " centre=" + std::to_string(centre) + " trial=" + std::to_string(trial));
+        const std::optional<int> fast = cofactors.sign_with(frame, x.data());
+        std::vector<const double*> first = {x.data()};
+        first.insert(first.end(), rows.begin(), rows.end());
+        std::optional<int> whole = geometry::refined_lifted_sign(frame, first.data());
+        if (whole && d % 2 == 1) whole = -*whole;  // x's row moved by d transpositions
+        ASSERT_EQ(fast, whole);
+        std::vector<const double*> last = rows;
+        last.push_back(x.data());
+        if (fast) {
+          ++decided;
+          ASSERT_EQ(*fast, reference_lifted_sign(d, points[0].data(), last));
+        }
+      }
+      EXPECT_GE(decided, 270) << "d=" << d;
+    }
+  }
+  // Too many rows: it declines rather than decide.
+  std::vector<std::vector<double>> high(6, std::vector<double>(5, 0.0));
+  for (int i = 1; i < 6; ++i) high[static_cast<std::size_t>(i)][static_cast<std::size_t>(i - 1)] = 1.0;
+  std::vector<const double*> rows;
+  for (int i = 1; i < 6; ++i) rows.push_back(high[static_cast<std::size_t>(i)].data());
+  geometry::RefinedCofactors cofactors;
+  cofactors.prepare(Frame{5, 5, nullptr, high[0].data()}, rows.data());
+  EXPECT_FALSE(cofactors.sign_with(Frame{5, 5, nullptr, high[0].data()}, high[1].data()));
+}
+
 TEST(RefinedSign, AgreesOnExactlyCosphericalPointsMovedByAFewUlps) {
   // Integer points of a circle, a sphere and a 3-sphere, scaled by 2^20 and moved to an
   // offset (all exact), with one coordinate of the last point moved by k units in the last

@@ -17,6 +17,7 @@
 #include "geometry/error_bound.hpp"
 #include "geometry/minors.hpp"
 #include "geometry/predicates.hpp"
+#include "geometry/refined_sign.hpp"
 
 namespace drange::engine {
 
@@ -304,6 +305,10 @@ class SearchKernel final : public FacetSearch::Kernel {
   // sphere (beats_candidate), remembered for the neighbouring facets' searches, which meet the
   // same ties (SearchOptions::remember_ties).
   KnownTies plane_ties_, sphere_ties_;
+  // The double-double stage's cofactors for the candidate's sphere (refined_sign.hpp), computed
+  // at its first near-tie.
+  geometry::RefinedCofactors refined_;
+  bool refined_ready_ = false;
 
   // Per candidate.
   std::int32_t candidate_ = -1;
@@ -473,6 +478,7 @@ template <int D>
 void SearchKernel<D>::set_candidate(std::int32_t id) {
   const int d = dim();
   candidate_ = id;
+  refined_ready_ = false;
   ++counters_->candidates;
   const double* p = points_.point(id);
   rows_[static_cast<std::size_t>(d - 1)] = p;
@@ -862,16 +868,20 @@ template <int D>
 int SearchKernel<D>::exact_beats(std::int32_t id) {
   const int d = dim();
   const geometry::Frame frame{d, d, nullptr, f0_};
-  if (!options_.remember_ties) return sigma_ * geometry::exact_lifted_sign_perturbed(frame, rows_.data(), ranks_.data());
   // The facet and the candidate, strictly on its open side, are affinely independent: they
   // define the candidate's sphere.
   std::array<std::int32_t, kMaxRow + 1> simplex;
   std::copy(facet_, facet_ + d, simplex.begin());
   simplex[static_cast<std::size_t>(d)] = candidate_;
-  if (!sphere_ties_.holds(simplex.data(), id)) {
-    const int s = geometry::exact_lifted_sign(frame, rows_.data());
+  if (!options_.remember_ties || !sphere_ties_.holds(simplex.data(), id)) {
+    if (!refined_ready_) {
+      refined_.prepare(frame, rows_.data());
+      refined_ready_ = true;
+    }
+    const std::optional<int> refined = refined_.sign_with(frame, points_.point(id));
+    const int s = refined ? *refined : geometry::integer_lifted_sign(frame, rows_.data());
     if (s != 0) return sigma_ * s;
-    sphere_ties_.record(simplex.data(), id);
+    if (options_.remember_ties) sphere_ties_.record(simplex.data(), id);
   }
   return sigma_ * geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data());
 }

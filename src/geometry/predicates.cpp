@@ -160,6 +160,10 @@ void integer_lifted_rows(const Frame& f, const IntegerScale& scale, const double
 // else computed with GMP, which alone counts as an exact evaluation.
 int exact_lifted_sign(const Frame& f, const double* const* points) {
   if (const std::optional<int> s = refined_lifted_sign(f, points)) return *s;
+  return integer_lifted_sign(f, points);
+}
+
+int integer_lifted_sign(const Frame& f, const double* const* points) {
   ++exact_count;
   const int n = f.k + 1;
   const IntegerScale scale = scale_of(f.dim, f.base, points, n);

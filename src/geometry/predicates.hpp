@@ -60,6 +60,9 @@ int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points,
 // Its unperturbed sign (the double-double stage, then GMP), for a caller that breaks the ties
 // itself with lifted_tie_sign.
 int exact_lifted_sign(const Frame& frame, const double* const* points);
+// And its last stage alone, GMP, for a caller that ran the double-double stage its own way
+// (RefinedCofactors, refined_sign.hpp).
+int integer_lifted_sign(const Frame& frame, const double* const* points);
 
 // The lifted determinant det[r_1; ...; r_k; r_x] (frame.k == frame.dim, rows relative to
 // frame.base as in lifted_sign) as a function of its last point x, written around a centre g

@@ -13,6 +13,7 @@
 
 #include <optional>
 
+#include "geometry/double_double.hpp"
 #include "geometry/predicates.hpp"
 
 namespace drange::geometry {
@@ -24,5 +25,26 @@ constexpr int kRefinedMaxRows = 5;
 // when the bound does not decide, frame.k + 1 > kRefinedMaxRows, or an operation underflowed
 // or overflowed.
 std::optional<int> refined_lifted_sign(const Frame& frame, const double* const* points);
+
+// The same stage for many points x against the same first frame.k points: the cofactors along
+// x's row are computed once (prepare), and each test (sign_with) is then a dot product of
+// double-double numbers. The value and bound are those of refined_lifted_sign on the rows with
+// x's first, so it decides the same cases. (A search tests many points against one candidate's
+// sphere: on 100 rings of 200 points on a cylinder, 44 near-ties per candidate.)
+class RefinedCofactors {
+ public:
+  // `points`: the first frame.k of lifted_sign's frame.k + 1 points.
+  void prepare(const Frame& frame, const double* const* points);
+  // lifted_sign's determinant with x as the last point, when proved; nullopt as
+  // refined_lifted_sign, or when prepare could not (too many rows, or under- or overflow).
+  // `frame` must be prepare's.
+  std::optional<int> sign_with(const Frame& frame, const double* x) const;
+
+ private:
+  int n_ = 0;
+  bool usable_ = false;
+  DoubleDouble cofactor_[kRefinedMaxRows];
+  double tree_[kRefinedMaxRows] = {};
+};
 
 }  // namespace drange::geometry
