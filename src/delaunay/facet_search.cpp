@@ -868,18 +868,21 @@ template <int D>
 int SearchKernel<D>::exact_beats(std::int32_t id) {
   const int d = dim();
   const geometry::Frame frame{d, d, nullptr, f0_};
+  // The double-double stage first: it decides the near-ties, which are most, and never a tie,
+  // so the known ties are looked up only for what it leaves (on 100 rings of a cylinder, the
+  // lookups before it took 16% of the time).
+  if (!refined_ready_) {
+    refined_.prepare(frame, rows_.data());
+    refined_ready_ = true;
+  }
+  if (const std::optional<int> refined = refined_.sign_with(frame, points_.point(id))) return sigma_ * *refined;
   // The facet and the candidate, strictly on its open side, are affinely independent: they
   // define the candidate's sphere.
   std::array<std::int32_t, kMaxRow + 1> simplex;
   std::copy(facet_, facet_ + d, simplex.begin());
   simplex[static_cast<std::size_t>(d)] = candidate_;
   if (!options_.remember_ties || !sphere_ties_.holds(simplex.data(), id)) {
-    if (!refined_ready_) {
-      refined_.prepare(frame, rows_.data());
-      refined_ready_ = true;
-    }
-    const std::optional<int> refined = refined_.sign_with(frame, points_.point(id));
-    const int s = refined ? *refined : geometry::integer_lifted_sign(frame, rows_.data());
+    const int s = geometry::integer_lifted_sign(frame, rows_.data());
     if (s != 0) return sigma_ * s;
     if (options_.remember_ties) sphere_ties_.record(simplex.data(), id);
   }

@@ -29,8 +29,11 @@ std::int32_t KnownTies::find(const std::int32_t* simplex) const {
 
 bool KnownTies::holds(const std::int32_t* simplex, std::int32_t id) const {
   if (first_link_.empty()) return false;
-  const std::int32_t set = find(simplex);
-  return set >= 0 && member(set, id);
+  if (!std::equal(last_simplex_.begin(), last_simplex_.end(), simplex) || last_simplex_.empty()) {
+    last_simplex_.assign(simplex, simplex + defining_);
+    last_set_ = find(simplex);
+  }
+  return last_set_ >= 0 && member(last_set_, id);
 }
 
 void KnownTies::link(std::int32_t set, std::int32_t id) {
@@ -50,6 +53,7 @@ void KnownTies::forget() {
 }
 
 void KnownTies::record(const std::int32_t* simplex, std::int32_t id) {
+  last_simplex_.clear();
   if (first_link_.empty()) first_link_.assign(static_cast<std::size_t>(points_), -1);
   if (links_.size() + static_cast<std::size_t>(defining_) + 1 > max_links_) forget();
   std::int32_t set = find(simplex);
