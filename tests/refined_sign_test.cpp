@@ -134,6 +134,54 @@ TEST(RefinedSign, CofactorsDecideAsTheWholeDeterminantWithTheTestedRowFirst) {
   EXPECT_FALSE(cofactors.sign_with(Frame{5, 5, nullptr, high[0].data()}, high[1].data()));
 }
 
+TEST(RefinedSign, OrientationAgreesWithTheRationalReferenceNearAHyperplane) {
+  // d points on a hyperplane through random directions, rounded to doubles (within about 2^-53
+  // of it, where the double filter cannot decide), and one more nudged off it by 0, 2^-45 or
+  // 2^-60 of its size: whenever the double-double stage decides, it is the exact sign; and it
+  // decides nearly all the cases that are not exactly flat.
+  for (int d = 2; d <= 5; ++d) {
+    TestRandom random(static_cast<std::uint64_t>(d * 31));
+    std::vector<double> normal(static_cast<std::size_t>(d));
+    for (double& x : normal) x = 2 * random.uniform() - 1;
+    int decided = 0, cases = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+      std::vector<std::vector<double>> points;
+      for (int i = 0; i < d + 1; ++i) {
+        // A point of the hyperplane normal . x = 0.3: random in all coordinates but the last,
+        // which is solved for (normal's last component is not 0 for these seeds).
+        std::vector<double> p(static_cast<std::size_t>(d));
+        double t = 0.3;
+        for (int k = 0; k + 1 < d; ++k) {
+          p[static_cast<std::size_t>(k)] = 2 * random.uniform() - 1;
+          t -= normal[static_cast<std::size_t>(k)] * p[static_cast<std::size_t>(k)];
+        }
+        p[static_cast<std::size_t>(d - 1)] = t / normal[static_cast<std::size_t>(d - 1)];
+        points.push_back(p);
+      }
+      const double nudge = trial % 3 == 0 ? 0.0 : (trial % 3 == 1 ? 0x1p-45 : -0x1p-60);
+      points.back()[static_cast<std::size_t>(d - 1)] *= 1 + nudge;
+      std::vector<const double*> simplex;
+      for (const auto& p : points) simplex.push_back(p.data());
+      const int exact = reference_orientation(d, simplex);
+      const Frame frame{d, d, nullptr, points[0].data()};
+      const std::optional<int> refined = geometry::refined_orientation(frame, simplex.data() + 1);
+      SCOPED_TRACE("d=" + std::to_string(d) + " trial=" + std::to_string(trial));
+      if (exact != 0) ++cases;
+      if (refined) {
+        ++decided;
+        ASSERT_EQ(*refined, exact);
+      }
+      ASSERT_EQ(geometry::orientation(frame, simplex.data() + 1), exact);
+    }
+    EXPECT_GE(decided, cases * 9 / 10) << "d=" << d;
+  }
+  // Exactly flat: the integer points of a plane in 3D leave it undecided.
+  const std::vector<std::vector<double>> flat = {{0, 0, 0}, {1, 2, 3}, {2, 4, 6}, {4, 1, 2}};
+  const std::vector<const double*> rows = {flat[1].data(), flat[2].data(), flat[3].data()};
+  EXPECT_EQ(reference_orientation(3, {flat[0].data(), flat[1].data(), flat[2].data(), flat[3].data()}), 0);
+  EXPECT_FALSE(geometry::refined_orientation(Frame{3, 3, nullptr, flat[0].data()}, rows.data()));
+}
+
 TEST(RefinedSign, AgreesOnExactlyCosphericalPointsMovedByAFewUlps) {
   // Integer points of a circle, a sphere and a 3-sphere, scaled by 2^20 and moved to an
   // offset (all exact), with one coordinate of the last point moved by k units in the last

@@ -113,6 +113,7 @@ ExactScratch& exact_scratch() {
 }  // namespace
 
 int exact_orientation(const Frame& f, const double* const* points) {
+  if (const std::optional<int> s = refined_orientation(f, points)) return *s;
   ++exact_count;
   const IntegerScale scale = scale_of(f.dim, f.base, points, f.k);
   ExactScratch& x = exact_scratch();

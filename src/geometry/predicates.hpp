@@ -2,9 +2,9 @@
 //
 // Every predicate returns the exact sign of a determinant of the input doubles: a fast
 // floating-point evaluation whose error bound is derived (see error_bound.hpp), then, only when
-// that bound cannot decide, an exact evaluation with GMP integers. The lifted determinant has
-// a stage between the two, up to 4D: the same evaluation in double-double arithmetic
-// (refined_sign.hpp), which decides the near-ties of points within rounding of a sphere. A zero never reaches the
+// that bound cannot decide, an exact evaluation with GMP integers. Between the two, up to 5 x 5,
+// the same evaluation in double-double arithmetic (refined_sign.hpp) decides the near-ties of
+// points within rounding of a sphere or of a hyperplane. A zero never reaches the
 // algorithm where it would matter: `lifted_sign_perturbed` breaks every tie by a symbolic
 // perturbation of the lifted coordinate (Edelsbrunner and Muecke's Simulation of Simplicity,
 // in the form Devillers and Teillaud give for Delaunay triangulations).

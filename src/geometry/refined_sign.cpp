@@ -93,12 +93,13 @@ void cofactors_of(const Entries& entry, const Sizes& size, DoubleDouble* cofacto
   }
 }
 
-// The sign of a value in double-double with its absolute tree, n rows deep, when certified.
-std::optional<int> certified(DoubleDouble det, double abs_tree, int n, int dim) {
+// The sign of a determinant computed by minors_of, with its absolute tree, when certified (n
+// rows, each entry carrying `entry_roundings` roundings).
+std::optional<int> certified(DoubleDouble det, double abs_tree, int n, int entry_roundings) {
   if (!(abs_tree < kFilterOverflow)) return std::nullopt;
   // The computed tree is within gamma(N) (in doubles) of the exact one, and the sizes drop
   // the entries' low parts (a relative 2^-53): the 1 + 2^-40 covers both.
-  const double bound = refined_gamma(laplace_roundings(n, dim)) * abs_tree * (1 + 0x1p-40);
+  const double bound = refined_gamma(laplace_roundings(n, entry_roundings)) * abs_tree * (1 + 0x1p-40);
   if (det.hi > bound) return 1;
   if (det.hi < -bound) return -1;
   return std::nullopt;
@@ -122,6 +123,31 @@ std::optional<int> refined_lifted_sign(const Frame& f, const double* const* poin
   }
   if (!watch.clean()) return std::nullopt;
   return certified(det, abs_tree, n, f.dim);
+}
+
+std::optional<int> refined_orientation(const Frame& f, const double* const* points) {
+  const int n = f.k;
+  if (n < 2 || n > kRefinedMaxRows) return std::nullopt;
+  const FloatingPointWatch watch;
+  Entries entry;
+  Sizes size;
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) {
+      entry[r][c] = difference(points[r][f.axis(c)], f.base[f.axis(c)]);
+      size[r][c] = std::fabs(entry[r][c].hi);
+    }
+  DoubleDouble det;
+  double abs_tree = 0.0;
+  switch (n) {
+    case 2: expand<2>(entry, size, det, abs_tree); break;
+    case 3: expand<3>(entry, size, det, abs_tree); break;
+    case 4: expand<4>(entry, size, det, abs_tree); break;
+    default: expand<5>(entry, size, det, abs_tree); break;
+  }
+  if (!watch.clean()) return std::nullopt;
+  // The entries are exact; counting one rounding each, as the lifted rows' spatial entries, only
+  // widens the bound.
+  return certified(det, abs_tree, n, 1);
 }
 
 void RefinedCofactors::prepare(const Frame& f, const double* const* points) {
