@@ -34,9 +34,9 @@ struct Frame {
 // Sign of det [pi(p_1 - base); ...; pi(p_k - base)]  (k rows, k columns).
 // For frame.k == dim and base = p_0 this is the orientation of the simplex (p_0, ..., p_k).
 int orientation(const Frame& frame, const double* const* points);
-// orientation in its two stages, for a caller that can learn a zero from elsewhere before it
-// pays for GMP (delaunay/known_ties.hpp): the floating-point filters and the exactness proofs
-// (nullopt when they cannot decide), then the exact evaluation alone.
+// orientation in two parts, for a caller that can learn a zero from elsewhere before it pays
+// for the exact stages (delaunay/known_ties.hpp): the floating-point filters and the exactness
+// proofs (nullopt when they cannot decide), then the exact stages alone (double-double, GMP).
 std::optional<int> filtered_orientation(const Frame& frame, const double* const* points);
 int exact_orientation(const Frame& frame, const double* const* points);
 
@@ -57,11 +57,9 @@ int lifted_tie_sign(const Frame& frame, const double* const* points, const std::
 // decide either (2 000 points on a sphere: not once in 1.26M evaluations). The double-double
 // stage and GMP decide.
 int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points, const std::int64_t* ranks);
-// Its unperturbed sign (the double-double stage, then GMP), for a caller that breaks the ties
-// itself with lifted_tie_sign.
-int exact_lifted_sign(const Frame& frame, const double* const* points);
-// And its last stage alone, GMP, for a caller that ran the double-double stage its own way
-// (RefinedCofactors, refined_sign.hpp).
+// lifted_sign's last stage alone, GMP, unperturbed, for a caller that ran the double-double
+// stage its own way (RefinedCofactors, refined_sign.hpp) and breaks the ties itself with
+// lifted_tie_sign.
 int integer_lifted_sign(const Frame& frame, const double* const* points);
 
 // The lifted determinant det[r_1; ...; r_k; r_x] (frame.k == frame.dim, rows relative to

@@ -1,5 +1,6 @@
-// geometry/refined_sign.hpp: the second stage of the lifted predicate, between the double
-// filter and GMP: the same determinant in double-double arithmetic with its error bound.
+// geometry/refined_sign.hpp: the second stage of the lifted and orientation predicates, between
+// the double filter and GMP: the same determinant in double-double arithmetic with its error
+// bound.
 //
 // Why: points within rounding of a sphere that is not the input's one sphere (the insides of
 // two concentric spheres, of small bubbles, of the rings of a cylinder) make the search test
@@ -18,7 +19,8 @@
 
 namespace drange::geometry {
 
-// Up to this many rows (frame.k + 1): the Laplace expansion's minors grow as 2^n.
+// Up to this many rows (frame.k + 1 lifted, frame.k oriented): the Laplace expansion's minors
+// grow as 2^n.
 constexpr int kRefinedMaxRows = 5;
 
 // The sign of lifted_sign's determinant when the double-double evaluation proves it; nullopt
