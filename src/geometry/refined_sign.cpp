@@ -80,6 +80,16 @@ void expand(const Entries& entry, const Sizes& size, DoubleDouble& det, double& 
   abs_tree = tree[(1 << N) - 1];
 }
 
+// expand<n> for a run-time n, 2 <= n <= kRefinedMaxRows.
+void expand_rows(int n, const Entries& entry, const Sizes& size, DoubleDouble& det, double& abs_tree) {
+  switch (n) {
+    case 2: expand<2>(entry, size, det, abs_tree); break;
+    case 3: expand<3>(entry, size, det, abs_tree); break;
+    case 4: expand<4>(entry, size, det, abs_tree); break;
+    default: expand<5>(entry, size, det, abs_tree); break;
+  }
+}
+
 // The cofactors along the first row of an N x N matrix whose other rows are entry[0 .. N - 2]:
 // the minors of those rows on every column but c, c = 0 .. N - 1, as minors_of gives them.
 template <int N>
@@ -115,12 +125,7 @@ std::optional<int> refined_lifted_sign(const Frame& f, const double* const* poin
   for (int r = 0; r < n; ++r) lifted_row(f, points[r], entry[r], size[r]);
   DoubleDouble det;
   double abs_tree = 0.0;
-  switch (n) {
-    case 2: expand<2>(entry, size, det, abs_tree); break;
-    case 3: expand<3>(entry, size, det, abs_tree); break;
-    case 4: expand<4>(entry, size, det, abs_tree); break;
-    default: expand<5>(entry, size, det, abs_tree); break;
-  }
+  expand_rows(n, entry, size, det, abs_tree);
   if (!watch.clean()) return std::nullopt;
   return certified(det, abs_tree, n, f.dim);
 }
@@ -138,12 +143,7 @@ std::optional<int> refined_orientation(const Frame& f, const double* const* poin
     }
   DoubleDouble det;
   double abs_tree = 0.0;
-  switch (n) {
-    case 2: expand<2>(entry, size, det, abs_tree); break;
-    case 3: expand<3>(entry, size, det, abs_tree); break;
-    case 4: expand<4>(entry, size, det, abs_tree); break;
-    default: expand<5>(entry, size, det, abs_tree); break;
-  }
+  expand_rows(n, entry, size, det, abs_tree);
   if (!watch.clean()) return std::nullopt;
   // The entries are exact; counting one rounding each, as the lifted rows' spatial entries, only
   // widens the bound.
