@@ -164,6 +164,11 @@ class SearchKernel final : public FacetSearch::Kernel {
   // lifted sign asks the double-double stage first); the lifted sign's ties broken by the
   // perturbation. rows_ holds x (and p) already; I(p, x) also needs ranks_.
   int exact_open_side(std::int32_t id);
+  // The facet's flat axes (exact_open_side), as a bit mask; computed at the facet's first exact
+  // orientation.
+  unsigned facet_flat_axes() const;
+  static constexpr unsigned kFlatAxesUnknown = ~0u;
+  unsigned flat_axes_ = kFlatAxesUnknown;
   int exact_beats(std::int32_t id);
   void reset_box();
   // SphereShell (sphere_shell.hpp): the candidate's form around the shell's centre, and the
@@ -405,6 +410,7 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
   facet_ = facet;
   sigma_ = sigma;
   f0_ = points_.point(facet[0]);
+  flat_axes_ = kFlatAxesUnknown;
   for (int k = 0; k < d; ++k) centroid_[static_cast<std::size_t>(k)] = 0.0;
   for (int i = 0; i < d; ++i) {
     const double* f = points_.point(facet[i]);
@@ -855,6 +861,14 @@ bool SearchKernel<D>::on_open_side(std::int32_t id) {
 template <int D>
 int SearchKernel<D>::exact_open_side(std::int32_t id) {
   const int d = dim();
+  // The axes on which all the facet's vertices agree (a horizontal facet of a terrain's
+  // plateau): a point that agrees too makes a zero column, so O = 0, without the call below.
+  if (flat_axes_ == kFlatAxesUnknown) flat_axes_ = facet_flat_axes();
+  const double* x = points_.point(id);
+  for (unsigned axes = flat_axes_; axes != 0; axes &= axes - 1) {
+    const int k = __builtin_ctz(axes);
+    if (x[k] == f0_[k]) return 0;
+  }
   const geometry::Frame frame{d, d, nullptr, f0_};
   if (const std::optional<int> s = geometry::filtered_orientation(frame, rows_.data())) return sigma_ * *s;
   if (!options_.remember_ties) return sigma_ * geometry::exact_orientation(frame, rows_.data());
@@ -866,6 +880,18 @@ int SearchKernel<D>::exact_open_side(std::int32_t id) {
   const int s = geometry::exact_orientation(frame, rows_.data());
   if (s == 0) plane_ties_.record(facet_, id);
   return sigma_ * s;
+}
+
+template <int D>
+unsigned SearchKernel<D>::facet_flat_axes() const {
+  const int d = dim();
+  unsigned axes = 0;
+  for (int k = 0; k < d; ++k) {
+    bool flat = true;
+    for (int i = 1; i < d && flat; ++i) flat = points_.point(facet_[i])[k] == f0_[k];
+    if (flat) axes |= 1u << k;
+  }
+  return axes;
 }
 
 template <int D>
