@@ -164,12 +164,12 @@ class SearchKernel final : public FacetSearch::Kernel {
   // lifted sign asks the double-double stage first); the lifted sign's ties broken by the
   // perturbation. rows_ holds x (and p) already; I(p, x) also needs ranks_.
   int exact_open_side(std::int32_t id);
+  int exact_beats(std::int32_t id);
   // The facet's flat axes (exact_open_side), as a bit mask; computed at the facet's first exact
   // orientation.
   unsigned facet_flat_axes() const;
   static constexpr unsigned kFlatAxesUnknown = ~0u;
   unsigned flat_axes_ = kFlatAxesUnknown;
-  int exact_beats(std::int32_t id);
   void reset_box();
   // SphereShell (sphere_shell.hpp): the candidate's form around the shell's centre, and the
   // tests that use it: a point's sign of sigma I(p, x) (0 when undecided), and a node's proof

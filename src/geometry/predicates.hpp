@@ -53,9 +53,10 @@ int lifted_sign_perturbed(const Frame& frame, const double* const* points, const
 // (facet_search.cpp does, on dyadic points): the perturbation alone decides.
 int lifted_tie_sign(const Frame& frame, const double* const* points, const std::int64_t* ranks);
 // lifted_sign_perturbed without the double filter, for a caller whose own filter of the same
-// determinant just failed (facet_search.cpp): near-ties, which the generic filter would not
-// decide either (2 000 points on a sphere: not once in 1.26M evaluations). The double-double
-// stage and GMP decide.
+// determinant just failed: near-ties, which the generic filter would not decide either (2 000
+// points on a sphere: not once in 1.26M evaluations). The double-double stage and GMP decide.
+// (facet_search.cpp now takes these stages one by one, exact_beats, to consult its known ties
+// between them.)
 int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points, const std::int64_t* ranks);
 // lifted_sign's last stage alone, GMP, unperturbed, for a caller that ran the double-double
 // stage its own way (RefinedCofactors, refined_sign.hpp) and breaks the ties itself with
