@@ -74,7 +74,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   // kd-tree visitor interface (spatial/kdtree.hpp).
   const double* query_lower() const { return lower_.data(); }
   const double* query_upper() const { return upper_.data(); }
-  bool prune(std::int32_t node) const;
+  bool prune(std::int32_t node);
   bool right_first(const spatial::KdTree::Node& node) const {
     return options_.visit_facet_child_first && centroid_[static_cast<std::size_t>(node.split_axis)] > node.split_value;
   }
@@ -168,6 +168,11 @@ class SearchKernel final : public FacetSearch::Kernel {
   // The facet's flat axes (exact_open_side), as a bit mask; computed at the facet's first exact
   // orientation.
   unsigned facet_flat_axes() const;
+  // Whether a node's box [lo, hi] is wholly on the closed side of a facet flat on an axis (a
+  // horizontal facet of a terrain's plateau), exactly: its largest O is 0 on the plateau's
+  // points, which prune's filter cannot certify negative, so before the first candidate every
+  // search from such a facet visited the whole plateau.
+  bool flat_closed_side(const double* lo, const double* hi);
   static constexpr unsigned kFlatAxesUnknown = ~0u;
   unsigned flat_axes_ = kFlatAxesUnknown;
   void reset_box();
@@ -276,6 +281,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   // f0_k|, |hi_k - f0_k|): the box's largest O is within orient_gamma_ + 2.01 gamma_c of the
   // absolute tree above the computed sum.
   double box_orient_gamma_;
+  double minor_gamma_;  // the factor of a_'s entries, (d-1)-minors (flat_closed_side)
   // 2^(52 + unit_exponent * units), dyadic points: the limit below which a minor with that many
   // units (its columns, the lift column counting twice) was computed exactly.
   std::array<double, kMaxRow + 3> exact_limits_{};
@@ -378,6 +384,7 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       lifted_gamma_(geometry::gamma_bound(
           geometry::laplace_roundings(points.dim + 1, geometry::lifted_entry_roundings(points.dim)))),
       box_orient_gamma_(orient_gamma_ + 2.01 * geometry::gamma_bound(geometry::laplace_roundings(points.dim - 1, 1))),
+      minor_gamma_(geometry::gamma_bound(geometry::laplace_roundings(points.dim - 1, 1))),
       minors_(points.dim + 1),
       inverse_d_(1.0 / points.dim),
       plane_ties_(points.dim, points.size),
@@ -1206,7 +1213,7 @@ unsigned SearchKernel<D>::boxes_in_reach(const double* boxes, double reach2) con
 }
 
 template <int D>
-bool SearchKernel<D>::prune(std::int32_t node) const {
+bool SearchKernel<D>::prune(std::int32_t node) {
   const int d = dim();
   const double* lo = points_.tree.template lower<D>(node);
   const double* hi = points_.tree.template upper<D>(node);
@@ -1252,7 +1259,21 @@ bool SearchKernel<D>::prune(std::int32_t node) const {
     m_abs += a_abs_[static_cast<std::size_t>(k)] * std::max(std::fabs(dlo), std::fabs(dhi));
   }
   if (orientation_sign(m, m_abs, box_orient_gamma_) < 0) return true;
+  if (flat_closed_side(lo, hi)) return true;
   return shell_ != nullptr && cone_on_closed_side(node, m_abs);
+}
+
+template <int D>
+bool SearchKernel<D>::flat_closed_side(const double* lo, const double* hi) {
+  if (flat_axes_ == kFlatAxesUnknown) flat_axes_ = facet_flat_axes();
+  if (flat_axes_ == 0) return false;
+  // One flat axis k at most (the facet's vertices are affinely independent), and the
+  // hyperplane is x_k = f0_k: every other coefficient of a_ is a minor with a zero column,
+  // computed as an exact 0, so sigma O(x) = a_k (x_k - f0_k) exactly where a_k's sign is
+  // right, which its own filter certifies (a_k is a (d-1)-minor).
+  const int k = __builtin_ctz(flat_axes_);
+  const int s = geometry::certified_sign_with(a_[static_cast<std::size_t>(k)], a_abs_[static_cast<std::size_t>(k)], minor_gamma_);
+  return s > 0 ? hi[k] <= f0_[k] : s < 0 && lo[k] >= f0_[k];
 }
 
 template <int D>
