@@ -15,6 +15,7 @@
 #include "geometry/error_bound.hpp"
 #include "geometry/exact.hpp"
 #include "geometry/exact_matrix.hpp"
+#include "geometry/wide_determinant.hpp"
 #include "geometry/minors.hpp"
 #include "geometry/refined_sign.hpp"
 
@@ -126,6 +127,7 @@ ExactScratch& exact_scratch() {
 
 int integer_orientation(const Frame& f, const double* const* points) {
   ++exact_count;
+  if (const std::optional<int> s = wide_orientation(f, points)) return *s;
   const IntegerScale scale = scale_of(f.dim, f.base, points, f.k);
   ExactScratch& x = exact_scratch();
   ExactScratch::resize(x.matrix, static_cast<std::size_t>(f.k * f.k));
@@ -166,7 +168,14 @@ void integer_lifted_rows(const Frame& f, const IntegerScale& scale, const double
 
 }  // namespace
 
+std::optional<int> small_integer_lifted_sign(const Frame& f, const double* const* points) {
+  const std::optional<int> s = wide_lifted_sign(f, points);
+  if (s) ++exact_count;
+  return s;
+}
+
 int integer_lifted_sign(const Frame& f, const double* const* points) {
+  if (const std::optional<int> s = small_integer_lifted_sign(f, points)) return *s;
   ++exact_count;
   const int n = f.k + 1;
   const IntegerScale scale = scale_of(f.dim, f.base, points, n);

@@ -62,6 +62,11 @@ int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points,
 // stage its own way (RefinedCofactors, refined_sign.hpp) and breaks the ties itself with
 // lifted_tie_sign.
 int integer_lifted_sign(const Frame& frame, const double* const* points);
+// Its first part alone: the exact value in fixed-width integers (wide_determinant.hpp), for k
+// = 2 or 3 in up to 3 dimensions when the points' differences fit; nullopt otherwise. A few
+// thousand instructions, against GMP's fifteen thousand and the double-double stage's three
+// for a candidate's cofactors: a caller that meets mostly exact ties asks it first.
+std::optional<int> small_integer_lifted_sign(const Frame& frame, const double* const* points);
 
 // The lifted determinant det[r_1; ...; r_k; r_x] (frame.k == frame.dim, rows relative to
 // frame.base as in lifted_sign) as a function of its last point x, written around a centre g
@@ -82,8 +87,9 @@ int simplex_orientation(int dim, const double* const* simplex);
 // nonzero volume), 0 if on it, -1 if outside. Unperturbed.
 int in_sphere(int dim, const double* const* simplex, const double* q);
 
-// Counts of how often the floating-point filters failed and GMP decided (for statistics;
-// thread-local, never reset by the library).
+// Counts of how often the floating-point filters and the double-double stage failed and the
+// integer stage decided (fixed-width or GMP; for statistics; thread-local, never reset by the
+// library).
 std::uint64_t exact_evaluations();
 
 }  // namespace drange::geometry

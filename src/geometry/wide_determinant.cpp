@@ -1,0 +1,142 @@
+// geometry/wide_determinant.cpp: exact signs of small determinants in fixed-width integers.
+#include "geometry/wide_determinant.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+
+#include "geometry/double_bits.hpp"
+#include "geometry/error_bound.hpp"
+#include "geometry/wide_integer.hpp"
+
+namespace drange::geometry {
+namespace {
+
+constexpr int kCoordinateBits = 125;  // |coordinate| < 2^125 in the common unit: differences fit in 128 bits
+constexpr int kDifferenceBits = 62;   // |difference| < 2^62: the bounds of every formula below
+
+// The common unit of the coordinates that enter one determinant: the least exponent of their
+// lowest set bits. Every coordinate is then an integer multiple of 2^unit.
+class CommonUnit {
+ public:
+  void include(double x) {
+    if (x != 0.0) unit_ = std::min(unit_, lowest_bit_exponent(x));
+  }
+  // x / 2^unit into `out`; false when it would not fit in kCoordinateBits.
+  bool scaled(double x, Int128& out) const {
+    if (x == 0.0) {
+      out = 0;
+      return true;
+    }
+    const DoubleParts p = parts_of(x);  // |significand| < 2^53
+    const int shift = p.exponent - unit_;
+    if (shift > kCoordinateBits - 53) return false;
+    // A negative shift drops only zero bits: the unit is at most x's lowest set bit.
+    const std::uint64_t significand = static_cast<std::uint64_t>(p.significand < 0 ? -p.significand : p.significand);
+    const Uint128 magnitude = shift >= 0 ? static_cast<Uint128>(significand) << shift : Uint128{significand >> -shift};
+    out = p.significand < 0 ? -static_cast<Int128>(magnitude) : static_cast<Int128>(magnitude);
+    return true;
+  }
+
+ private:
+  int unit_ = std::numeric_limits<int>::max();
+};
+
+// x - base in the common unit (base already scaled), into `out`; false when x does not fit or
+// the difference is not below 2^kDifferenceBits.
+[[gnu::always_inline]] inline bool difference(const CommonUnit& unit, double x, Int128 base, std::int64_t& out) {
+  Int128 a;
+  if (!unit.scaled(x, a)) return false;
+  const Int128 d = a - base;
+  constexpr Int128 kLimit = Int128{1} << kDifferenceBits;
+  if (!(d < kLimit && d > -kLimit)) return false;
+  out = static_cast<std::int64_t>(d);
+  return true;
+}
+
+Int128 product(std::int64_t a, std::int64_t b) { return static_cast<Int128>(a) * b; }
+
+// a d - b c, of differences: below 2^125.
+Int128 minor2(std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d) { return product(a, d) - product(b, c); }
+
+}  // namespace
+
+std::optional<int> wide_orientation(const Frame& f, const double* const* points) {
+  const int k = f.k;
+  if (k < 1 || k > 3) return std::nullopt;
+  CommonUnit unit;
+  for (int c = 0; c < k; ++c) {
+    unit.include(f.base[f.axis(c)]);
+    for (int r = 0; r < k; ++r) unit.include(points[r][f.axis(c)]);
+  }
+  std::int64_t a[3][3];
+  for (int c = 0; c < k; ++c) {
+    Int128 base;
+    if (!unit.scaled(f.base[f.axis(c)], base)) return std::nullopt;
+    for (int r = 0; r < k; ++r)
+      if (!difference(unit, points[r][f.axis(c)], base, a[r][c])) return std::nullopt;
+  }
+  if (k == 1) return (a[0][0] > 0) - (a[0][0] < 0);
+  if (k == 2) {
+    const Int128 det = minor2(a[0][0], a[0][1], a[1][0], a[1][1]);
+    return (det > 0) - (det < 0);
+  }
+  // Along the last row: each term below 2^187, the sum below 2^189.
+  const Wide<3> det = Wide<1>::from(a[2][0]) * Wide<2>::from(minor2(a[0][1], a[0][2], a[1][1], a[1][2])) -
+                      Wide<1>::from(a[2][1]) * Wide<2>::from(minor2(a[0][0], a[0][2], a[1][0], a[1][2])) +
+                      Wide<1>::from(a[2][2]) * Wide<2>::from(minor2(a[0][0], a[0][1], a[1][0], a[1][1]));
+  return det.sign();
+}
+
+std::optional<int> wide_lifted_sign(const Frame& f, const double* const* points) {
+  const int k = f.k, n = k + 1;
+  if (k < 2 || k > 3 || f.dim > 3) return std::nullopt;
+  CommonUnit unit;
+  for (int c = 0; c < f.dim; ++c) {
+    unit.include(f.base[c]);
+    for (int r = 0; r < n; ++r) unit.include(points[r][c]);
+  }
+  // Rows [pi(p_r - base), |p_r - base|^2]: the lift below dim 2^124 <= 2^126.
+  Int128 base[3];
+  for (int c = 0; c < f.dim; ++c)
+    if (!unit.scaled(f.base[c], base[c])) return std::nullopt;
+  std::int64_t x[4][3];
+  Int128 lift[4];
+  for (int r = 0; r < n; ++r) {
+    std::int64_t delta[3];
+    lift[r] = 0;
+    for (int c = 0; c < f.dim; ++c) {
+      if (!difference(unit, points[r][c], base[c], delta[c])) return std::nullopt;
+      lift[r] += product(delta[c], delta[c]);
+    }
+    for (int c = 0; c < k; ++c) x[r][c] = delta[f.axis(c)];
+  }
+  if (k == 2) {
+    // Along the lift column: minors below 2^125, lifts below 2^126, the sum below 2^253.
+    const Wide<4> det = Wide<2>::from(lift[0]) * Wide<2>::from(minor2(x[1][0], x[1][1], x[2][0], x[2][1])) -
+                        Wide<2>::from(lift[1]) * Wide<2>::from(minor2(x[0][0], x[0][1], x[2][0], x[2][1])) +
+                        Wide<2>::from(lift[2]) * Wide<2>::from(minor2(x[0][0], x[0][1], x[1][0], x[1][1]));
+    return det.sign();
+  }
+  // k = 3: along the lift column, det = sum_r (-1)^(r + 1) L_r S_r, S_r the spatial 3 x 3 minor
+  // without row r, each along its last row from the 2 x 2 minors of rows (0, 1), (0, 2) and
+  // (1, 2): 2 x 2 minors below 2^125, S_r below 2^189, each product below 2^315.
+  Wide<2> m[3][3];  // m[pair][omitted column]
+  const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+  for (int p = 0; p < 3; ++p) {
+    const int r = pairs[p][0], s = pairs[p][1];
+    m[p][0] = Wide<2>::from(minor2(x[r][1], x[r][2], x[s][1], x[s][2]));
+    m[p][1] = Wide<2>::from(minor2(x[r][0], x[r][2], x[s][0], x[s][2]));
+    m[p][2] = Wide<2>::from(minor2(x[r][0], x[r][1], x[s][0], x[s][1]));
+  }
+  // The 3 x 3 minor of rows (pair, t) along row t.
+  const auto spatial3 = [&](int p, int t) {
+    return Wide<1>::from(x[t][0]) * m[p][0] - Wide<1>::from(x[t][1]) * m[p][1] + Wide<1>::from(x[t][2]) * m[p][2];
+  };
+  const Wide<5> det = Wide<2>::from(lift[3]) * spatial3(0, 2) - Wide<2>::from(lift[2]) * spatial3(0, 3) +
+                      Wide<2>::from(lift[1]) * spatial3(1, 3) - Wide<2>::from(lift[0]) * spatial3(2, 3);
+  return det.sign();
+}
+
+}  // namespace drange::geometry

@@ -1,0 +1,139 @@
+// Tests of geometry/wide_determinant.hpp and wide_integer.hpp: every sign against GMP's.
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "geometry/exact_matrix.hpp"
+#include "geometry/wide_determinant.hpp"
+#include "geometry/wide_integer.hpp"
+
+namespace {
+
+using drange::geometry::Frame;
+using drange::geometry::Int128;
+using drange::geometry::Wide;
+
+mpz_class to_mpz(Int128 x) {
+  const bool negative = x < 0;
+  __extension__ unsigned __int128 m = negative ? -static_cast<unsigned __int128>(x) : static_cast<unsigned __int128>(x);
+  mpz_class z = static_cast<unsigned long>(m >> 64);
+  z <<= 64;
+  z += static_cast<unsigned long>(m & ~0ul);
+  return negative ? mpz_class(-z) : z;
+}
+
+template <int N>
+mpz_class to_mpz(const Wide<N>& w) {
+  mpz_class z = 0;
+  for (int i = N - 1; i >= 0; --i) {
+    z <<= 64;
+    z += static_cast<unsigned long>(w.limb[i]);
+  }
+  if (w.negative()) z -= mpz_class(1) << (64 * N);
+  return z;
+}
+
+Int128 random_int128(std::mt19937_64& rng, int bits) {
+  __extension__ unsigned __int128 m = (static_cast<unsigned __int128>(rng()) << 64) | rng();
+  if (bits < 128) m &= (static_cast<unsigned __int128>(1) << bits) - 1;
+  const Int128 x = static_cast<Int128>(m);
+  return (rng() & 1) ? -x : x;
+}
+
+TEST(WideInteger, SumsDifferencesAndProductsMatchGmp) {
+  std::mt19937_64 rng(3);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int bits_a = 1 + static_cast<int>(rng() % 62), bits_b = 1 + static_cast<int>(rng() % 125);
+    const Int128 a = random_int128(rng, bits_a), b = random_int128(rng, bits_b), c = random_int128(rng, 125);
+    const Wide<1> wa = Wide<1>::from(a);
+    const Wide<2> wb = Wide<2>::from(b), wc = Wide<2>::from(c);
+    ASSERT_EQ(to_mpz(wa * wb), to_mpz(a) * to_mpz(b));
+    ASSERT_EQ(to_mpz(wb + wc), to_mpz(b) + to_mpz(c));
+    ASSERT_EQ(to_mpz(wb - wc), to_mpz(b) - to_mpz(c));
+    const Wide<3> product = wa * wc;
+    ASSERT_EQ(to_mpz(wb * product), to_mpz(b) * to_mpz(a) * to_mpz(c));
+    ASSERT_EQ((wb * product).sign(), sgn(to_mpz(b) * to_mpz(a) * to_mpz(c)));
+  }
+}
+
+// GMP's sign of the same determinants (exact_matrix.hpp): the reference.
+int gmp_sign(const Frame& f, const double* const* points, bool lifted) {
+  const int n = lifted ? f.k + 1 : f.k;
+  drange::geometry::IntegerScale scale;
+  for (int c = 0; c < f.dim; ++c) scale.include(f.base[c]);
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < f.dim; ++c) scale.include(points[r][c]);
+  std::vector<mpz_class> a(static_cast<std::size_t>(n * n));
+  for (int r = 0; r < n; ++r) {
+    mpz_class lift = 0;
+    for (int c = 0; c < f.dim; ++c) {
+      const mpz_class delta = scale.integer(points[r][c]) - scale.integer(f.base[c]);
+      lift += delta * delta;
+    }
+    for (int c = 0; c < f.k; ++c)
+      a[static_cast<std::size_t>(r * n + c)] = scale.integer(points[r][f.axis(c)]) - scale.integer(f.base[f.axis(c)]);
+    if (lifted) a[static_cast<std::size_t>(r * n + f.k)] = lift;
+  }
+  return sgn(drange::geometry::bareiss_determinant(a, n));
+}
+
+// Points of four kinds: decimal grids (0.1 k, 0.01 k), a cylindrical grid (r cos t, r sin t,
+// z: ties that are not dyadic), random doubles near one point, and a few far apart or tiny
+// (which the wide stage must decline).
+std::vector<double> random_point(std::mt19937_64& rng, int dim, int kind) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> p(static_cast<std::size_t>(dim));
+  for (int c = 0; c < dim; ++c) {
+    double& x = p[static_cast<std::size_t>(c)];
+    switch (kind) {
+      case 0: x = 0.1 * static_cast<double>(rng() % 8); break;
+      case 1: x = 0.01 * static_cast<double>(400 + rng() % 6); break;
+      case 2: {
+        const double r = 1.0 + 0.1 * static_cast<double>(rng() % 3), t = 2 * M_PI * static_cast<double>(rng() % 40) / 40;
+        x = c == 0 ? r * std::cos(t) : c == 1 ? r * std::sin(t) : static_cast<double>(rng() % 4) / 49;
+        break;
+      }
+      case 3: x = 0.5 + 1e-3 * u(rng); break;
+      default: x = (rng() & 1) ? 1e-30 * u(rng) : 1e10 * u(rng);
+    }
+  }
+  return p;
+}
+
+TEST(WideDeterminant, SignsMatchGmpOnTiesAndNearTies) {
+  std::mt19937_64 rng(7);
+  int decided[2] = {0, 0}, zeros = 0, declined = 0;
+  for (int trial = 0; trial < 40000; ++trial) {
+    const int dim = 2 + static_cast<int>(rng() % 2), kind = static_cast<int>(rng() % 5);
+    const bool lifted = (rng() & 1) != 0;
+    const int k = lifted ? 2 + static_cast<int>(rng() % (dim - 1)) : 1 + static_cast<int>(rng() % dim);
+    const int n = lifted ? k + 1 : k;
+    std::vector<std::vector<double>> coords;
+    for (int i = 0; i <= n; ++i) coords.push_back(random_point(rng, dim, kind));
+    std::vector<const double*> rows;
+    for (int i = 1; i <= n; ++i) rows.push_back(coords[static_cast<std::size_t>(i)].data());
+    const int axes[3] = {2, 0, 1};  // projected frames take the axes out of order
+    const Frame f{dim, k, (k < dim && (rng() & 1)) ? axes + (3 - dim) : nullptr, coords[0].data()};
+    if (f.axes != nullptr && f.axis(0) >= dim) continue;
+    const std::optional<int> s = lifted ? drange::geometry::wide_lifted_sign(f, rows.data())
+                                        : drange::geometry::wide_orientation(f, rows.data());
+    if (!s) {
+      ++declined;
+      continue;
+    }
+    ASSERT_EQ(*s, gmp_sign(f, rows.data(), lifted)) << "trial " << trial << " kind " << kind << " lifted " << lifted << " k " << k << " dim " << dim << " axes " << (f.axes != nullptr) << " base " << coords[0][0] << "," << coords[0][1] << " p1 " << coords[1][0] << "," << coords[1][1];
+    ++decided[lifted];
+    if (*s == 0) ++zeros;
+  }
+  // Every kind but the last is decided, ties among them (the grids): with this seed 16 398
+  // orientations and 14 853 lifted determinants decided, 1 641 zeros, 8 749 declined.
+  EXPECT_GT(decided[0], 14000);
+  EXPECT_GT(decided[1], 13000);
+  EXPECT_GT(zeros, 1200);
+  EXPECT_GT(declined, 6000);
+}
+
+}  // namespace
