@@ -321,6 +321,13 @@ class SearchKernel final : public FacetSearch::Kernel {
   // at its first near-tie.
   geometry::RefinedCofactors refined_;
   bool refined_ready_ = false;
+  // Ties minus near-ties among the recent exact lifted tests, within +-kTieBalanceLimit: which
+  // stage exact_beats asks first. It orders the stages only; every stage's sign is exact.
+  static constexpr int kTieBalanceLimit = 16;
+  int tie_balance_ = 0;
+  void note_exact_outcome(bool tie) {
+    tie_balance_ = tie ? std::min(tie_balance_ + 1, kTieBalanceLimit) : std::max(tie_balance_ - 1, -kTieBalanceLimit);
+  }
 
   // Per candidate.
   std::int32_t candidate_ = -1;
@@ -905,6 +912,15 @@ template <int D>
 int SearchKernel<D>::exact_beats(std::int32_t id) {
   const int d = dim();
   const geometry::Frame frame{d, d, nullptr, f0_};
+  // Where the recent exact tests were mostly ties (grids whose coordinates are not dyadic),
+  // the fixed-width integer stage first: it decides ties and near-ties alike, for less than the
+  // double-double stage spends on a candidate's cofactors, which decide no tie.
+  if (tie_balance_ > 0) {
+    if (const std::optional<int> s = geometry::small_integer_lifted_sign(frame, rows_.data())) {
+      note_exact_outcome(*s == 0);
+      return sigma_ * (*s != 0 ? *s : geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data()));
+    }
+  }
   // The double-double stage first: it decides the near-ties, which are most, and never a tie,
   // so the known ties are looked up only for what it leaves (on 100 rings of a cylinder, the
   // lookups before it took 16% of the time).
@@ -912,7 +928,11 @@ int SearchKernel<D>::exact_beats(std::int32_t id) {
     refined_.prepare(frame, rows_.data());
     refined_ready_ = true;
   }
-  if (const std::optional<int> refined = refined_.sign_with(frame, points_.point(id))) return sigma_ * *refined;
+  if (const std::optional<int> refined = refined_.sign_with(frame, points_.point(id))) {
+    note_exact_outcome(false);
+    return sigma_ * *refined;
+  }
+  note_exact_outcome(true);
   // The facet and the candidate, strictly on its open side, are affinely independent: they
   // define the candidate's sphere.
   std::array<std::int32_t, kMaxRow + 1> simplex;
