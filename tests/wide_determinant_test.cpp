@@ -136,4 +136,33 @@ TEST(WideDeterminant, SignsMatchGmpOnTiesAndNearTies) {
   EXPECT_GT(declined, 6000);
 }
 
+TEST(WideDeterminant, CofactorsGiveTheWholeDeterminantsSign) {
+  // In 3D, a candidate's rows once, then many last points: the same sign as GMP's for every point
+  // they accept, and they accept most (they decline a point with a lower set bit).
+  std::mt19937_64 rng(9);
+  int accepted = 0, tested = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int dim = 3, kind = static_cast<int>(rng() % 4);
+    std::vector<std::vector<double>> coords;
+    for (int i = 0; i <= dim; ++i) coords.push_back(random_point(rng, dim, kind));
+    std::vector<const double*> rows;
+    for (int i = 1; i <= dim; ++i) rows.push_back(coords[static_cast<std::size_t>(i)].data());
+    rows.push_back(nullptr);  // the last row: each point in turn
+    const Frame f{dim, dim, nullptr, coords[0].data()};
+    drange::geometry::WideLiftedCofactors cofactors;
+    if (!cofactors.prepare(f, rows.data())) continue;
+    for (int j = 0; j < 10; ++j) {
+      const std::vector<double> x = random_point(rng, dim, kind);
+      rows.back() = x.data();
+      ++tested;
+      const std::optional<int> s = cofactors.sign_with(x.data());
+      if (!s) continue;
+      ++accepted;
+      ASSERT_EQ(*s, gmp_sign(f, rows.data(), true)) << "trial " << trial << " kind " << kind;
+    }
+  }
+  // With this seed: 26 361 of the 27 800 points tested accepted.
+  EXPECT_GT(accepted, tested * 3 / 4);
+}
+
 }  // namespace

@@ -18,6 +18,7 @@
 #include "geometry/minors.hpp"
 #include "geometry/predicates.hpp"
 #include "geometry/refined_sign.hpp"
+#include "geometry/wide_determinant.hpp"
 
 namespace drange::engine {
 
@@ -324,6 +325,10 @@ class SearchKernel final : public FacetSearch::Kernel {
   // Ties minus near-ties among the recent exact lifted tests, within +-kTieBalanceLimit: which
   // stage exact_beats asks first. It orders the stages only; every stage's sign is exact.
   static constexpr int kTieBalanceLimit = 16;
+  // The candidate's cofactors in fixed-width integers (wide_determinant.hpp), computed at its
+  // first exact test that asks them; wide_usable_ when they fit.
+  geometry::WideLiftedCofactors wide_;
+  bool wide_ready_ = false, wide_usable_ = false;
   int tie_balance_ = 0;
   void note_exact_outcome(bool tie) {
     tie_balance_ = tie ? std::min(tie_balance_ + 1, kTieBalanceLimit) : std::max(tie_balance_ - 1, -kTieBalanceLimit);
@@ -499,7 +504,7 @@ template <int D>
 void SearchKernel<D>::set_candidate(std::int32_t id) {
   const int d = dim();
   candidate_ = id;
-  refined_ready_ = false;
+  refined_ready_ = wide_ready_ = false;
   ++counters_->candidates;
   const double* p = points_.point(id);
   rows_[static_cast<std::size_t>(d - 1)] = p;
@@ -915,8 +920,17 @@ int SearchKernel<D>::exact_beats(std::int32_t id) {
   // Where the recent exact tests were mostly ties (grids whose coordinates are not dyadic),
   // the fixed-width integer stage first: it decides ties and near-ties alike, for less than the
   // double-double stage spends on a candidate's cofactors, which decide no tie.
+  // The candidate's cofactors in those integers serve its later tests (2.9 per candidate on a
+  // cylindrical grid).
   if (tie_balance_ > 0) {
-    if (const std::optional<int> s = geometry::small_integer_lifted_sign(frame, rows_.data())) {
+    if (!wide_ready_) {
+      wide_usable_ = d == 3 && wide_.prepare(frame, rows_.data());  // 3D only (wide_determinant.hpp)
+      wide_ready_ = true;
+    }
+    std::optional<int> s = wide_usable_ ? wide_.sign_with(points_.point(id)) : std::nullopt;
+    if (s) geometry::count_exact_evaluation();
+    else s = geometry::small_integer_lifted_sign(frame, rows_.data());
+    if (s) {
       note_exact_outcome(*s == 0);
       return sigma_ * (*s != 0 ? *s : geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data()));
     }

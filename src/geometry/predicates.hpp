@@ -87,6 +87,10 @@ int simplex_orientation(int dim, const double* const* simplex);
 // nonzero volume), 0 if on it, -1 if outside. Unperturbed.
 int in_sphere(int dim, const double* const* simplex, const double* q);
 
+// Counts one exact evaluation that a caller made with a stage of its own (facet_search.cpp:
+// WideLiftedCofactors, wide_determinant.hpp), for exact_evaluations().
+void count_exact_evaluation();
+
 // Counts of how often the floating-point filters and the double-double stage failed and the
 // integer stage decided (fixed-width or GMP; for statistics; thread-local, never reset by the
 // library).

@@ -23,6 +23,8 @@ class CommonUnit {
   void include(double x) {
     if (x != 0.0) unit_ = std::min(unit_, lowest_bit_exponent(x));
   }
+  int unit() const { return unit_; }
+  void set_unit(int unit) { unit_ = unit; }
   // x / 2^unit into `out`; false when it would not fit in kCoordinateBits.
   bool scaled(double x, Int128& out) const {
     if (x == 0.0) {
@@ -59,6 +61,22 @@ Int128 product(std::int64_t a, std::int64_t b) { return static_cast<Int128>(a) *
 
 // a d - b c, of differences: below 2^125.
 Int128 minor2(std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d) { return product(a, d) - product(b, c); }
+
+// The rows of the lifted determinant: x[r] the spatial differences on the frame's axes, lift[r]
+// the squared distance over all dim axes, for rows [0, rows); false when one does not fit.
+bool lifted_rows(const Frame& f, const CommonUnit& unit, const Int128* base, const double* const* points, int rows,
+                 std::int64_t (*x)[3], Int128* lift) {
+  for (int r = 0; r < rows; ++r) {
+    std::int64_t delta[3];
+    lift[r] = 0;
+    for (int c = 0; c < f.dim; ++c) {
+      if (!difference(unit, points[r][c], base[c], delta[c])) return false;
+      lift[r] += product(delta[c], delta[c]);
+    }
+    for (int c = 0; c < f.k; ++c) x[r][c] = delta[f.axis(c)];
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -103,15 +121,7 @@ std::optional<int> wide_lifted_sign(const Frame& f, const double* const* points)
     if (!unit.scaled(f.base[c], base[c])) return std::nullopt;
   std::int64_t x[4][3];
   Int128 lift[4];
-  for (int r = 0; r < n; ++r) {
-    std::int64_t delta[3];
-    lift[r] = 0;
-    for (int c = 0; c < f.dim; ++c) {
-      if (!difference(unit, points[r][c], base[c], delta[c])) return std::nullopt;
-      lift[r] += product(delta[c], delta[c]);
-    }
-    for (int c = 0; c < k; ++c) x[r][c] = delta[f.axis(c)];
-  }
+  if (!lifted_rows(f, unit, base, points, n, x, lift)) return std::nullopt;
   if (k == 2) {
     // Along the lift column: minors below 2^125, lifts below 2^126, the sum below 2^253.
     const Wide<4> det = Wide<2>::from(lift[0]) * Wide<2>::from(minor2(x[1][0], x[1][1], x[2][0], x[2][1])) -
@@ -136,6 +146,56 @@ std::optional<int> wide_lifted_sign(const Frame& f, const double* const* points)
   };
   const Wide<5> det = Wide<2>::from(lift[3]) * spatial3(0, 2) - Wide<2>::from(lift[2]) * spatial3(0, 3) +
                       Wide<2>::from(lift[1]) * spatial3(1, 3) - Wide<2>::from(lift[0]) * spatial3(2, 3);
+  return det.sign();
+}
+
+bool WideLiftedCofactors::prepare(const Frame& f, const double* const* points) {
+  if (!(f.dim == 3 && f.k == 3 && f.axes == nullptr)) return false;
+  CommonUnit unit;
+  for (int c = 0; c < 3; ++c) {
+    unit.include(f.base[c]);
+    for (int r = 0; r < 3; ++r) unit.include(points[r][c]);
+  }
+  unit_ = unit.unit();
+  for (int c = 0; c < 3; ++c)
+    if (!unit.scaled(f.base[c], base_[c])) return false;
+  std::int64_t x[3][3];
+  Int128 lift[3];
+  if (!lifted_rows(f, unit, base_, points, 3, x, lift)) return false;
+  // x's row is the fourth of four: cofactor signs -, +, -, + along it. The minor without
+  // column c, along the lift column, from the 2 x 2 spatial minors of the row pairs.
+  Wide<2> m[3][3];  // m[pair][omitted column], pairs (0, 1), (0, 2), (1, 2)
+  const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+  for (int p = 0; p < 3; ++p) {
+    const int r = pairs[p][0], s = pairs[p][1];
+    m[p][0] = Wide<2>::from(minor2(x[r][1], x[r][2], x[s][1], x[s][2]));
+    m[p][1] = Wide<2>::from(minor2(x[r][0], x[r][2], x[s][0], x[s][2]));
+    m[p][2] = Wide<2>::from(minor2(x[r][0], x[r][1], x[s][0], x[s][1]));
+  }
+  for (int c = 0; c < 3; ++c) {
+    // Rows 0, 1, 2 over the two spatial columns other than c and the lift: along the lift
+    // column, L_0 m(rows 1, 2) - L_1 m(rows 0, 2) + L_2 m(rows 0, 1), the minors without c.
+    const Wide<4> minor = Wide<2>::from(lift[0]) * m[2][c] - Wide<2>::from(lift[1]) * m[1][c] + Wide<2>::from(lift[2]) * m[0][c];
+    spatial_[c] = (c & 1) ? minor : -minor;
+  }
+  lift_ = Wide<1>::from(x[2][0]) * m[0][0] - Wide<1>::from(x[2][1]) * m[0][1] + Wide<1>::from(x[2][2]) * m[0][2];
+  return true;
+}
+
+std::optional<int> WideLiftedCofactors::sign_with(const double* point) const {
+  CommonUnit unit;
+  for (int c = 0; c < 3; ++c) unit.include(point[c]);
+  if (unit.unit() < unit_) return std::nullopt;  // a lower set bit than the rows' unit
+  unit.set_unit(unit_);
+  std::int64_t x[3];
+  Int128 lift = 0;
+  for (int c = 0; c < 3; ++c) {
+    if (!difference(unit, point[c], base_[c], x[c])) return std::nullopt;
+    lift += product(x[c], x[c]);
+  }
+  // Each product below 2^315, the sum below 2^317.
+  Wide<5> det = Wide<2>::from(lift) * lift_;
+  for (int c = 0; c < 3; ++c) det = det + Wide<1>::from(x[c]) * spatial_[c];
   return det.sign();
 }
 

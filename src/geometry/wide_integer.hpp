@@ -85,6 +85,16 @@ DRANGE_WIDE_INLINE Wide<A + B> operator*(const Wide<A>& a, const Wide<B>& b) {
   return negative ? -out : out;
 }
 
+// a in M >= N limbs (sign-extended).
+template <int M, int N>
+DRANGE_WIDE_INLINE Wide<M> widen(const Wide<N>& a) {
+  static_assert(M >= N, "widen only widens");
+  Wide<M> out;
+  for (int i = 0; i < N; ++i) out.limb[i] = a.limb[i];
+  for (int i = N; i < M; ++i) out.limb[i] = a.negative() ? ~std::uint64_t{0} : 0;
+  return out;
+}
+
 #undef DRANGE_WIDE_INLINE
 
 }  // namespace drange::geometry
