@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""bench/degenerate_families.py: writes the eighteenth to twentieth rounds' probe inputs
-(bench/RESULTS.md, "The eighteenth round" to "The twentieth round"): 20 000 points each (5 000
-for two_spheres4) on curved sets that are not one input sphere, and a terrain with a flat
-plateau, where the direct search is weak, in Qhull's format, into a directory.
+"""bench/degenerate_families.py: writes the eighteenth to twenty-second rounds' probe inputs
+(bench/RESULTS.md, "The eighteenth round" to "The twenty-second round"): 20 000 points each
+(5 000 for two_spheres4) on curved sets that are not one input sphere, a terrain with a flat
+plateau, where the direct search is weak, and decimal grids and rounded points, whose ties
+need the exact stages, in Qhull's format, into a directory.
 
     bench/degenerate_families.py DIR
 
@@ -65,6 +66,16 @@ def families(rng):
         x, y = rng.random(), rng.random()
         plateau.append([x, y, 0.3 if x < 0.5 else 0.3 + 0.2 * (x - 0.5) * math.sin(7 * y)])
     yield "plateau", plateau
+    # The twenty-second round's decimal data: grids of 0.1 k and 0.01 k (as numpy.arange makes
+    # them: no power of two divides the coordinates, so every tie is for the exact stages), and
+    # uniform points rounded to two decimals (distinct), as in CSV files.
+    yield "decimal_grid3", [[0.1 * i, 0.1 * j, 0.1 * k] for i in range(27) for j in range(27) for k in range(27)]
+    yield "decimal_grid2", [[0.01 * i, 0.01 * j] for i in range(200) for j in range(100)]
+    rounded = {}
+    while len(rounded) < N:
+        p = tuple(round(rng.random(), 2) for _ in range(3))
+        rounded[p] = None
+    yield "rounded3", [list(p) for p in rounded]
 
 
 def main():

@@ -59,12 +59,14 @@ DRANGE_ONLY = {("uniform", 216000, 3)}
 BEYOND = [("uniform", 4500, 7), ("uniform", 9000, 7), ("uniform", 1500, 8), ("uniform", 2000, 8)]
 # `--degenerate`: the probe inputs of bench/degenerate_families.py (points on curved sets that are
 # not one input sphere: concentric spheres, spheres about several centres, rings, smooth
-# surfaces), as ("family:NAME", n, d), against the peers of DEGENERATE_PEERS only.
+# surfaces; a plateau; decimal grids and rounded points), as ("family:NAME", n, d), against the
+# peers of DEGENERATE_PEERS only.
 DEGENERATE = [("family:" + name, n, d) for name, n, d in [
     ("two_circles", 20000, 2), ("bubbles2", 20000, 2), ("polar_grid", 20000, 2),
     ("two_spheres3", 20000, 3), ("five_spheres3", 20000, 3), ("layers3", 20000, 3), ("bubbles3", 20000, 3),
     ("cylinder_rings", 20000, 3), ("circle_in_3d", 20002, 3), ("cylinder", 20000, 3), ("torus", 20000, 3),
-    ("hemisphere", 20000, 3), ("sphere_in_ball", 20000, 3), ("two_spheres4", 5000, 4), ("plateau", 20000, 3)]]
+    ("hemisphere", 20000, 3), ("sphere_in_ball", 20000, 3), ("two_spheres4", 5000, 4), ("plateau", 20000, 3),
+    ("decimal_grid3", 19683, 3), ("decimal_grid2", 20000, 2), ("rounded3", 20000, 3)]]
 DEGENERATE_PEERS = {2: ["cgal2", "qhull"], 3: ["cgal3", "qhull"], 4: ["cgal-dd", "qhull"]}
 QUICK = [("uniform", 100000, 2), ("grid", 90000, 2), ("uniform", 100000, 3), ("uniform", 10000, 4), ("uniform", 3000, 5)]
 # Ablation: (distribution, n, d, variants).
