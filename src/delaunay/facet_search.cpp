@@ -330,6 +330,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   geometry::WideLiftedCofactors wide_;
   bool wide_ready_ = false, wide_usable_ = false;
   int tie_balance_ = 0;
+  int plane_tie_balance_ = 0;  // the same for the exact orientations (exact_open_side)
   void note_exact_outcome(bool tie) {
     tie_balance_ = tie ? std::min(tie_balance_ + 1, kTieBalanceLimit) : std::max(tie_balance_ - 1, -kTieBalanceLimit);
   }
@@ -896,7 +897,11 @@ int SearchKernel<D>::exact_open_side(std::int32_t id) {
   // many times (a lookup is then a binary search), and half the points that reach here are on
   // it (after it: callgrind, a 10 x 20 x 25 cylindrical grid +4.5%).
   if (plane_ties_.holds(facet_, id)) return 0;
-  const int s = geometry::exact_orientation(frame, rows_.data());
+  // As exact_beats: the fixed-width stage first where the recent exact orientations were mostly
+  // ties (a grid's coplanar points), which the double-double stage never decides.
+  std::optional<int> small = plane_tie_balance_ > 0 ? geometry::small_integer_orientation(frame, rows_.data()) : std::nullopt;
+  const int s = small ? *small : geometry::exact_orientation(frame, rows_.data());
+  plane_tie_balance_ = s == 0 ? std::min(plane_tie_balance_ + 1, kTieBalanceLimit) : std::max(plane_tie_balance_ - 1, -kTieBalanceLimit);
   if (s == 0) plane_ties_.record(facet_, id);
   return sigma_ * s;
 }

@@ -125,9 +125,19 @@ ExactScratch& exact_scratch() {
   return scratch;
 }
 
+}  // namespace
+
+std::optional<int> small_integer_orientation(const Frame& f, const double* const* points) {
+  const std::optional<int> s = wide_orientation(f, points);
+  if (s) ++exact_count;
+  return s;
+}
+
+namespace {
+
 int integer_orientation(const Frame& f, const double* const* points) {
+  if (const std::optional<int> s = small_integer_orientation(f, points)) return *s;
   ++exact_count;
-  if (const std::optional<int> s = wide_orientation(f, points)) return *s;
   const IntegerScale scale = scale_of(f.dim, f.base, points, f.k);
   ExactScratch& x = exact_scratch();
   ExactScratch::resize(x.matrix, static_cast<std::size_t>(f.k * f.k));

@@ -39,6 +39,10 @@ int orientation(const Frame& frame, const double* const* points);
 // proofs (nullopt when they cannot decide), then the exact stages alone (double-double, GMP).
 std::optional<int> filtered_orientation(const Frame& frame, const double* const* points);
 int exact_orientation(const Frame& frame, const double* const* points);
+// The exact stage's fixed-width part alone (wide_determinant.hpp: k <= 3, when the points'
+// differences fit), before the double-double stage, for a caller that meets mostly ties;
+// nullopt when it does not apply.
+std::optional<int> small_integer_orientation(const Frame& frame, const double* const* points);
 
 // Sign of the (k+1)x(k+1) determinant with rows [pi(p_i - base), |p_i - base|^2], i = 1..k+1.
 // Unperturbed: zero when the k+2 points (base and the k+1 given) are cospherical.
