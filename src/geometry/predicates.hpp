@@ -39,7 +39,7 @@ int orientation(const Frame& frame, const double* const* points);
 // proofs (nullopt when they cannot decide), then the exact stages alone (double-double, GMP).
 std::optional<int> filtered_orientation(const Frame& frame, const double* const* points);
 int exact_orientation(const Frame& frame, const double* const* points);
-// The exact stage's fixed-width part alone (wide_determinant.hpp: k <= 3, when the points'
+// The exact stage's fixed-width part alone (wide_determinant.hpp: k <= 4, when the points'
 // differences fit), before the double-double stage, for a caller that meets mostly ties;
 // nullopt when it does not apply.
 std::optional<int> small_integer_orientation(const Frame& frame, const double* const* points);
@@ -67,7 +67,7 @@ int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points,
 // lifted_tie_sign.
 int integer_lifted_sign(const Frame& frame, const double* const* points);
 // Its first part alone: the exact value in fixed-width integers (wide_determinant.hpp), for k
-// = 2 or 3 in up to 3 dimensions when the points' differences fit; nullopt otherwise. A few
+// = 2 to 4 in up to 4 dimensions when the points' differences fit; nullopt otherwise. A few
 // thousand instructions, against GMP's fifteen thousand and the double-double stage's three
 // for a candidate's cofactors: a caller that meets mostly exact ties asks it first.
 std::optional<int> small_integer_lifted_sign(const Frame& frame, const double* const* points);

@@ -15,6 +15,7 @@ namespace {
 
 constexpr int kCoordinateBits = 125;  // |coordinate| < 2^125 in the common unit: differences fit in 128 bits
 constexpr int kDifferenceBits = 62;   // |difference| < 2^62: the bounds of every formula below
+constexpr int kMaxColumns = 4;        // 4 x 4 orientations, 5 x 5 lifted determinants (4D)
 
 // The common unit of the coordinates that enter one determinant: the least exponent of their
 // lowest set bits. Every coordinate is then an integer multiple of 2^unit.
@@ -65,9 +66,9 @@ Int128 minor2(std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d) { 
 // The rows of the lifted determinant: x[r] the spatial differences on the frame's axes, lift[r]
 // the squared distance over all dim axes, for rows [0, rows); false when one does not fit.
 bool lifted_rows(const Frame& f, const CommonUnit& unit, const Int128* base, const double* const* points, int rows,
-                 std::int64_t (*x)[3], Int128* lift) {
+                 std::int64_t (*x)[kMaxColumns], Int128* lift) {
   for (int r = 0; r < rows; ++r) {
-    std::int64_t delta[3];
+    std::int64_t delta[kMaxColumns];
     lift[r] = 0;
     for (int c = 0; c < f.dim; ++c) {
       if (!difference(unit, points[r][c], base[c], delta[c])) return false;
@@ -78,17 +79,26 @@ bool lifted_rows(const Frame& f, const CommonUnit& unit, const Int128* base, con
   return true;
 }
 
+// The 4 x 4 spatial determinant of rows r0, r1, r2, r3 of x, by Laplace along the first two:
+// the sum over column pairs a < b of (-1)^(a + b + 1) M(r0, r1; a, b) M(r2, r3; the other
+// two). Each 2 x 2 minor below 2^125, each product below 2^250, the sum below 2^253.
+Wide<4> spatial4(const std::int64_t (*x)[kMaxColumns], int r0, int r1, int r2, int r3) {
+  const auto m = [&](int r, int s, int a, int b) { return Wide<2>::from(minor2(x[r][a], x[r][b], x[s][a], x[s][b])); };
+  return m(r0, r1, 0, 1) * m(r2, r3, 2, 3) - m(r0, r1, 0, 2) * m(r2, r3, 1, 3) + m(r0, r1, 0, 3) * m(r2, r3, 1, 2) +
+         m(r0, r1, 1, 2) * m(r2, r3, 0, 3) - m(r0, r1, 1, 3) * m(r2, r3, 0, 2) + m(r0, r1, 2, 3) * m(r2, r3, 0, 1);
+}
+
 }  // namespace
 
 std::optional<int> wide_orientation(const Frame& f, const double* const* points) {
   const int k = f.k;
-  if (k < 1 || k > 3) return std::nullopt;
+  if (k < 1 || k > kMaxColumns) return std::nullopt;
   CommonUnit unit;
   for (int c = 0; c < k; ++c) {
     unit.include(f.base[f.axis(c)]);
     for (int r = 0; r < k; ++r) unit.include(points[r][f.axis(c)]);
   }
-  std::int64_t a[3][3];
+  std::int64_t a[kMaxColumns][kMaxColumns];
   for (int c = 0; c < k; ++c) {
     Int128 base;
     if (!unit.scaled(f.base[f.axis(c)], base)) return std::nullopt;
@@ -100,6 +110,7 @@ std::optional<int> wide_orientation(const Frame& f, const double* const* points)
     const Int128 det = minor2(a[0][0], a[0][1], a[1][0], a[1][1]);
     return (det > 0) - (det < 0);
   }
+  if (k == 4) return spatial4(a, 0, 1, 2, 3).sign();
   // Along the last row: each term below 2^187, the sum below 2^189.
   const Wide<3> det = Wide<1>::from(a[2][0]) * Wide<2>::from(minor2(a[0][1], a[0][2], a[1][1], a[1][2])) -
                       Wide<1>::from(a[2][1]) * Wide<2>::from(minor2(a[0][0], a[0][2], a[1][0], a[1][2])) +
@@ -109,19 +120,27 @@ std::optional<int> wide_orientation(const Frame& f, const double* const* points)
 
 std::optional<int> wide_lifted_sign(const Frame& f, const double* const* points) {
   const int k = f.k, n = k + 1;
-  if (k < 2 || k > 3 || f.dim > 3) return std::nullopt;
+  if (k < 2 || k > kMaxColumns || f.dim > kMaxColumns) return std::nullopt;
   CommonUnit unit;
   for (int c = 0; c < f.dim; ++c) {
     unit.include(f.base[c]);
     for (int r = 0; r < n; ++r) unit.include(points[r][c]);
   }
   // Rows [pi(p_r - base), |p_r - base|^2]: the lift below dim 2^124 <= 2^126.
-  Int128 base[3];
+  Int128 base[kMaxColumns];
   for (int c = 0; c < f.dim; ++c)
     if (!unit.scaled(f.base[c], base[c])) return std::nullopt;
-  std::int64_t x[4][3];
-  Int128 lift[4];
+  std::int64_t x[kMaxColumns + 1][kMaxColumns];
+  Int128 lift[kMaxColumns + 1];
   if (!lifted_rows(f, unit, base, points, n, x, lift)) return std::nullopt;
+  if (k == 4) {
+    // Along the lift column: det = sum_r (-1)^r L_r S_r, S_r the spatial 4 x 4 minor without
+    // row r (below 2^253); each product below 2^379, the sum below 2^382.
+    const Wide<6> det = Wide<2>::from(lift[0]) * spatial4(x, 1, 2, 3, 4) - Wide<2>::from(lift[1]) * spatial4(x, 0, 2, 3, 4) +
+                        Wide<2>::from(lift[2]) * spatial4(x, 0, 1, 3, 4) - Wide<2>::from(lift[3]) * spatial4(x, 0, 1, 2, 4) +
+                        Wide<2>::from(lift[4]) * spatial4(x, 0, 1, 2, 3);
+    return det.sign();
+  }
   if (k == 2) {
     // Along the lift column: minors below 2^125, lifts below 2^126, the sum below 2^253.
     const Wide<4> det = Wide<2>::from(lift[0]) * Wide<2>::from(minor2(x[1][0], x[1][1], x[2][0], x[2][1])) -
@@ -159,7 +178,7 @@ bool WideLiftedCofactors::prepare(const Frame& f, const double* const* points) {
   unit_ = unit.unit();
   for (int c = 0; c < 3; ++c)
     if (!unit.scaled(f.base[c], base_[c])) return false;
-  std::int64_t x[3][3];
+  std::int64_t x[3][kMaxColumns];
   Int128 lift[3];
   if (!lifted_rows(f, unit, base_, points, 3, x, lift)) return false;
   // x's row is the fourth of four: cofactor signs -, +, -, + along it. The minor without

@@ -1,6 +1,6 @@
 // geometry/wide_integer.hpp: signed integers of a fixed number of 64-bit limbs.
 //
-// The exact stage of the small predicates (wide_determinant.hpp) needs integers of 64 to 320
+// The exact stage of the small predicates (wide_determinant.hpp) needs integers of 64 to 384
 // bits whose sizes are known at compile time from the formula. Two's complement in N limbs,
 // least significant first; every operation is written for its sizes, unrolled, and checks
 // nothing: the caller bounds every value so that it fits.
