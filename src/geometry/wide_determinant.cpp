@@ -79,6 +79,18 @@ bool lifted_rows(const Frame& f, const CommonUnit& unit, const Int128* base, con
   return true;
 }
 
+// The 2 x 2 spatial minors of the first three rows' pairs (0, 1), (0, 2), (1, 2) on three
+// columns: m[pair][the column left out], each below 2^125.
+void pair_minors3(const std::int64_t (*x)[kMaxColumns], Wide<2> (&m)[3][3]) {
+  const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+  for (int p = 0; p < 3; ++p) {
+    const int r = pairs[p][0], s = pairs[p][1];
+    m[p][0] = Wide<2>::from(minor2(x[r][1], x[r][2], x[s][1], x[s][2]));
+    m[p][1] = Wide<2>::from(minor2(x[r][0], x[r][2], x[s][0], x[s][2]));
+    m[p][2] = Wide<2>::from(minor2(x[r][0], x[r][1], x[s][0], x[s][1]));
+  }
+}
+
 // The 4 x 4 spatial determinant of rows r0, r1, r2, r3 of x, by Laplace along the first two:
 // the sum over column pairs a < b of (-1)^(a + b + 1) M(r0, r1; a, b) M(r2, r3; the other
 // two). Each 2 x 2 minor below 2^125, each product below 2^250, the sum below 2^253.
@@ -151,14 +163,8 @@ std::optional<int> wide_lifted_sign(const Frame& f, const double* const* points)
   // k = 3: along the lift column, det = sum_r (-1)^(r + 1) L_r S_r, S_r the spatial 3 x 3 minor
   // without row r, each along its last row from the 2 x 2 minors of rows (0, 1), (0, 2) and
   // (1, 2): 2 x 2 minors below 2^125, S_r below 2^189, each product below 2^315.
-  Wide<2> m[3][3];  // m[pair][omitted column]
-  const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-  for (int p = 0; p < 3; ++p) {
-    const int r = pairs[p][0], s = pairs[p][1];
-    m[p][0] = Wide<2>::from(minor2(x[r][1], x[r][2], x[s][1], x[s][2]));
-    m[p][1] = Wide<2>::from(minor2(x[r][0], x[r][2], x[s][0], x[s][2]));
-    m[p][2] = Wide<2>::from(minor2(x[r][0], x[r][1], x[s][0], x[s][1]));
-  }
+  Wide<2> m[3][3];
+  pair_minors3(x, m);
   // The 3 x 3 minor of rows (pair, t) along row t.
   const auto spatial3 = [&](int p, int t) {
     return Wide<1>::from(x[t][0]) * m[p][0] - Wide<1>::from(x[t][1]) * m[p][1] + Wide<1>::from(x[t][2]) * m[p][2];
@@ -183,14 +189,8 @@ bool WideLiftedCofactors::prepare(const Frame& f, const double* const* points) {
   if (!lifted_rows(f, unit, base_, points, 3, x, lift)) return false;
   // x's row is the fourth of four: cofactor signs -, +, -, + along it. The minor without
   // column c, along the lift column, from the 2 x 2 spatial minors of the row pairs.
-  Wide<2> m[3][3];  // m[pair][omitted column], pairs (0, 1), (0, 2), (1, 2)
-  const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-  for (int p = 0; p < 3; ++p) {
-    const int r = pairs[p][0], s = pairs[p][1];
-    m[p][0] = Wide<2>::from(minor2(x[r][1], x[r][2], x[s][1], x[s][2]));
-    m[p][1] = Wide<2>::from(minor2(x[r][0], x[r][2], x[s][0], x[s][2]));
-    m[p][2] = Wide<2>::from(minor2(x[r][0], x[r][1], x[s][0], x[s][1]));
-  }
+  Wide<2> m[3][3];
+  pair_minors3(x, m);
   for (int c = 0; c < 3; ++c) {
     // Rows 0, 1, 2 over the two spatial columns other than c and the lift: along the lift
     // column, L_0 m(rows 1, 2) - L_1 m(rows 0, 2) + L_2 m(rows 0, 1), the minors without c.
