@@ -322,18 +322,19 @@ class SearchKernel final : public FacetSearch::Kernel {
   // at its first near-tie.
   geometry::RefinedCofactors refined_;
   bool refined_ready_ = false;
-  // Ties minus near-ties among the recent exact lifted tests, within +-kTieBalanceLimit: which
-  // stage exact_beats asks first. It orders the stages only; every stage's sign is exact.
+  // Ties minus near-ties among the recent exact lifted tests (tie_balance_, exact_beats) and
+  // orientations (plane_tie_balance_, exact_open_side), within +-kTieBalanceLimit: positive, the
+  // fixed-width integer stage goes before the double-double one. They order the stages only;
+  // every stage's sign is exact.
   static constexpr int kTieBalanceLimit = 16;
+  int tie_balance_ = 0, plane_tie_balance_ = 0;
+  static void note_outcome(int& balance, bool tie) {
+    balance = tie ? std::min(balance + 1, kTieBalanceLimit) : std::max(balance - 1, -kTieBalanceLimit);
+  }
   // The candidate's cofactors in fixed-width integers (wide_determinant.hpp), computed at its
   // first exact test that asks them; wide_usable_ when they fit.
   geometry::WideLiftedCofactors wide_;
   bool wide_ready_ = false, wide_usable_ = false;
-  int tie_balance_ = 0;
-  int plane_tie_balance_ = 0;  // the same for the exact orientations (exact_open_side)
-  void note_exact_outcome(bool tie) {
-    tie_balance_ = tie ? std::min(tie_balance_ + 1, kTieBalanceLimit) : std::max(tie_balance_ - 1, -kTieBalanceLimit);
-  }
 
   // Per candidate.
   std::int32_t candidate_ = -1;
@@ -901,7 +902,7 @@ int SearchKernel<D>::exact_open_side(std::int32_t id) {
   // ties (a grid's coplanar points), which the double-double stage never decides.
   std::optional<int> small = plane_tie_balance_ > 0 ? geometry::small_integer_orientation(frame, rows_.data()) : std::nullopt;
   const int s = small ? *small : geometry::exact_orientation(frame, rows_.data());
-  plane_tie_balance_ = s == 0 ? std::min(plane_tie_balance_ + 1, kTieBalanceLimit) : std::max(plane_tie_balance_ - 1, -kTieBalanceLimit);
+  note_outcome(plane_tie_balance_, s == 0);
   if (s == 0) plane_ties_.record(facet_, id);
   return sigma_ * s;
 }
@@ -936,7 +937,7 @@ int SearchKernel<D>::exact_beats(std::int32_t id) {
     if (s) geometry::count_exact_evaluation();
     else s = geometry::small_integer_lifted_sign(frame, rows_.data());
     if (s) {
-      note_exact_outcome(*s == 0);
+      note_outcome(tie_balance_, *s == 0);
       return sigma_ * (*s != 0 ? *s : geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data()));
     }
   }
@@ -948,10 +949,10 @@ int SearchKernel<D>::exact_beats(std::int32_t id) {
     refined_ready_ = true;
   }
   if (const std::optional<int> refined = refined_.sign_with(frame, points_.point(id))) {
-    note_exact_outcome(false);
+    note_outcome(tie_balance_, false);
     return sigma_ * *refined;
   }
-  note_exact_outcome(true);
+  note_outcome(tie_balance_, true);  // most likely a tie: the double-double stage decides no tie
   // The facet and the candidate, strictly on its open side, are affinely independent: they
   // define the candidate's sphere.
   std::array<std::int32_t, kMaxRow + 1> simplex;
