@@ -2,7 +2,6 @@
 #include "geometry/wide_determinant.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cstdint>
 #include <limits>
 

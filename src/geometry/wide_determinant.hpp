@@ -7,9 +7,10 @@
 // Bareiss' exact divisions. Here the same exact value (every coordinate an integer in the
 // points' common unit, as in exact_matrix.hpp) is expanded by minors in integers whose widths
 // the formula fixes: 64-bit differences, 128-bit 2 x 2 minors and lifts, 192 to 384 bits above
-// them (up to the 5 x 5 lifted determinant of 4D). That needs each difference from the base point below 2^62 in the common unit (the
-// points are near each other in a determinant: 0.01 k near 5 differ by about 2^55 units of
-// 0.01's last bit) and each coordinate below 2^125.
+// them (up to the 5 x 5 lifted determinant of 4D). That needs each difference from the base
+// point below 2^62 in the common unit (the points of a determinant are near each other: 0.01 k
+// near 5 differ by about 2^55 units of 0.01's last bit) and each coordinate below 2^125. The
+// signs are exact: tests/wide_determinant_test.cpp checks them against GMP's.
 #pragma once
 
 #include <optional>
@@ -20,7 +21,7 @@
 namespace drange::geometry {
 
 // The sign of orientation's determinant (predicates.hpp) for k <= 4, exactly; nullopt when a
-// coordinate is too large in the common unit (or k > 4).
+// difference or coordinate is too large in the common unit (or k > 4).
 std::optional<int> wide_orientation(const Frame& frame, const double* const* points);
 // The sign of lifted_sign's determinant, unperturbed, for k = 2 to 4 in at most 4 ambient
 // dimensions, exactly; nullopt otherwise.
