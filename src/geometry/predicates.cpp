@@ -288,10 +288,14 @@ int lifted_tie_sign(const Frame& f, const double* const* points, const std::int6
       if (j != i) others[o++] = point(j);
     Frame g = f;
     g.base = others[0];
-    const int h = orientation(g, others + 1);
-    if (h != 0) {
+    // A tie's points are often coplanar by fours (the grids whose ties these are): a zero,
+    // which the double-double stage never decides, so the fixed-width stage goes first.
+    std::optional<int> h = filtered_orientation(g, others + 1);
+    if (!h) h = small_integer_orientation(g, others + 1);
+    if (!h) h = exact_orientation(g, others + 1);
+    if (*h != 0) {
       const int parity = ((i + f.k) & 1) ? -1 : 1;
-      return -parity * h;
+      return -parity * *h;
     }
   }
   // Only reachable when the k+2 points do not span the k-flat: a caller's bug.
