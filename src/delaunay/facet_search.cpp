@@ -161,9 +161,11 @@ class SearchKernel final : public FacetSearch::Kernel {
   bool on_open_side(std::int32_t id);
   bool beats_candidate(std::int32_t id);
   // The signs of sigma O(x) and sigma I(p, x) whose filters failed, exactly: zero when a known
-  // tie says so, else from the double-double stage or GMP, whose zeros teach the known ties (the
-  // lifted sign asks the double-double stage first); the lifted sign's ties broken by the
-  // perturbation. rows_ holds x (and p) already; I(p, x) also needs ranks_.
+  // tie says so, else from the double-double stage or the integer stages (fixed-width, GMP),
+  // in the order the tie balances choose; their zeros teach the known ties (the lifted sign's
+  // only on the double-double path: the fixed-width path first neither asks nor teaches them).
+  // The lifted sign's ties are broken by the perturbation. rows_ holds x (and p) already;
+  // I(p, x) also needs ranks_.
   int exact_open_side(std::int32_t id);
   int exact_beats(std::int32_t id);
   // The facet's flat axes (exact_open_side), as a bit mask; computed at the facet's first exact
@@ -314,7 +316,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   double inverse_d_;
   std::array<const double*, kMaxRow> rows_{};  // f_1, ..., f_{d-1}, p, q for the exact predicates
   std::array<std::int64_t, kMaxRow + 1> ranks_{};  // ranks of f_0, ..., f_{d-1}, p, q
-  // The points that GMP proved on a facet's hyperplane (on_open_side) or on a candidate's
+  // The points that the integer stages proved on a facet's hyperplane (on_open_side) or on a candidate's
   // sphere (beats_candidate), remembered for the neighbouring facets' searches, which meet the
   // same ties (SearchOptions::remember_ties).
   KnownTies plane_ties_, sphere_ties_;
@@ -988,7 +990,7 @@ bool SearchKernel<D>::beats_candidate(std::int32_t id) {
     // (cospherical points, as in every cell of a grid), which only the perturbation breaks.
     if (candidate_exact_ && v_abs < exact_limits_[static_cast<std::size_t>(d + 2)])
       s = v != 0.0 ? (v > 0 ? 1 : -1) : sigma_ * geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data());
-    else if (filters_hold_)  // the filter above was sound and failed: a near-tie, for GMP
+    else if (filters_hold_)  // the filter above was sound and failed: a near-tie, for the exact stages
       s = exact_beats(id);
     else
       s = sigma_ * geometry::lifted_sign_perturbed(frame, rows_.data(), ranks_.data());

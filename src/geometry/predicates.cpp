@@ -80,7 +80,7 @@ std::optional<int> filtered_sign(int n, int entry_roundings, int lift_column, Un
     minors.set_row(r, row.data());
   }
   // An underflow anywhere (entries, products, sums) voids both the error bound and the
-  // exactness proof: only GMP may decide then.
+  // exactness proof: only the integer stages may decide then.
   if (!watch.clean()) return std::nullopt;
   const std::uint32_t all = (std::uint32_t{1} << n) - 1;
   const double value = minors.minor(all);
@@ -195,7 +195,7 @@ int integer_lifted_sign(const Frame& f, const double* const* points) {
 }
 
 // The exact signs: proved by the double-double evaluation when it can be (refined_sign.hpp),
-// else computed with GMP, which alone counts as an exact evaluation.
+// else computed in integers (fixed-width, else GMP), which alone count as exact evaluations.
 int exact_orientation(const Frame& f, const double* const* points) {
   if (const std::optional<int> s = refined_orientation(f, points)) return *s;
   return integer_orientation(f, points);

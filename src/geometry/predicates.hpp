@@ -2,7 +2,8 @@
 //
 // Every predicate returns the exact sign of a determinant of the input doubles: a fast
 // floating-point evaluation whose error bound is derived (see error_bound.hpp), then, only when
-// that bound cannot decide, an exact evaluation with GMP integers. Between the two, up to 5 x 5,
+// that bound cannot decide, an exact evaluation in integers: fixed-width ones up to 5 x 5 where
+// the values fit (wide_determinant.hpp), GMP's otherwise. Between the two, up to 5 x 5,
 // the same evaluation in double-double arithmetic (refined_sign.hpp) decides the near-ties of
 // points within rounding of a sphere or of a hyperplane. A zero never reaches the
 // algorithm where it would matter: `lifted_sign_perturbed` breaks every tie by a symbolic
@@ -36,7 +37,8 @@ struct Frame {
 int orientation(const Frame& frame, const double* const* points);
 // orientation in two parts, for a caller that can learn a zero from elsewhere before it pays
 // for the exact stages (delaunay/known_ties.hpp): the floating-point filters and the exactness
-// proofs (nullopt when they cannot decide), then the exact stages alone (double-double, GMP).
+// proofs (nullopt when they cannot decide), then the exact stages alone (double-double, then
+// integers: fixed-width or GMP).
 std::optional<int> filtered_orientation(const Frame& frame, const double* const* points);
 int exact_orientation(const Frame& frame, const double* const* points);
 // The exact stage's fixed-width part alone (wide_determinant.hpp: k <= 4, when the points'
@@ -58,13 +60,13 @@ int lifted_sign_perturbed(const Frame& frame, const double* const* points, const
 int lifted_tie_sign(const Frame& frame, const double* const* points, const std::int64_t* ranks);
 // lifted_sign_perturbed without the double filter, for a caller whose own filter of the same
 // determinant just failed: near-ties, which the generic filter would not decide either (2 000
-// points on a sphere: not once in 1.26M evaluations). The double-double stage and GMP decide.
+// points on a sphere: not once in 1.26M evaluations). The double-double and integer stages decide.
 // (facet_search.cpp now takes these stages one by one, exact_beats, to consult its known ties
 // between them.)
 int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points, const std::int64_t* ranks);
-// lifted_sign's last stage alone, GMP, unperturbed, for a caller that ran the double-double
-// stage its own way (RefinedCofactors, refined_sign.hpp) and breaks the ties itself with
-// lifted_tie_sign.
+// lifted_sign's last stage alone (integers: fixed-width, else GMP), unperturbed, for a caller
+// that ran the double-double stage its own way (RefinedCofactors, refined_sign.hpp) and breaks
+// the ties itself with lifted_tie_sign.
 int integer_lifted_sign(const Frame& frame, const double* const* points);
 // Its first part alone: the exact value in fixed-width integers (wide_determinant.hpp), for k
 // = 2 to 4 in up to 4 dimensions when the points' differences fit; nullopt otherwise. A few
