@@ -23,6 +23,7 @@
 #include "drange/errors.hpp"
 #include "drange/generate.hpp"
 #include "geometry/predicates.hpp"
+#include "geometry/refined_sign.hpp"
 #include "oracle.hpp"
 
 namespace {
@@ -391,6 +392,34 @@ TEST(DelaunayRobustness, HardFamilies) {
     const Triangulation t = drange::delaunay(points);
     expect_valid(points, t, name);
     expect_consistent_adjacency(points, t);
+  }
+}
+
+TEST(DelaunayRobustness, DecimalInputsGiveTheSameTriangulationOnEveryProductCode) {
+  // Coordinates with two decimals (a CSV file's) and a grid of 0.1 k: their decimal ties are
+  // near-ties in binary, which the double-double stage decides. Its products by fused
+  // multiply-add and by Dekker's splitting must give the same, valid, triangulation.
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<std::pair<std::string, PointCloud>> cases;
+  for (int d = 2; d <= 4; ++d) {
+    PointCloud c{d, {}};
+    for (int i = 0; i < (d == 4 ? 600 : 3000); ++i)
+      for (int k = 0; k < d; ++k) c.coords.push_back(std::round(u(rng) * 100) / 100);
+    cases.emplace_back("rounded to 0.01 in " + std::to_string(d) + "D", c);
+  }
+  {
+    PointCloud c = grid(3, 9);
+    for (double& x : c.coords) x *= 0.1;
+    cases.emplace_back("grid of 0.1 k", c);
+  }
+  for (const auto& [name, points] : cases) {
+    drange::geometry::set_refined_fma(false);
+    const Triangulation dekker = drange::delaunay(points);
+    drange::geometry::set_refined_fma(true);
+    const Triangulation fma = drange::delaunay(points);
+    expect_valid(points, fma, name);
+    EXPECT_EQ(dekker.simplices, fma.simplices) << name;
   }
 }
 

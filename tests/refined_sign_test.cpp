@@ -60,20 +60,47 @@ void check_case(int d, TestRandom& random, double centre, double radius, double 
   ASSERT_EQ(geometry::lifted_sign(frame, rows.data()), exact) << "d=" << d << " nudge=" << nudge;
 }
 
-TEST(RefinedSign, DoubleDoubleOperationsAreWithinTheirBound) {
+// Every test runs on both codes of the double-double products: fused multiply-adds (where the
+// processor has them) and Dekker's splitting (as on processors without them).
+class RefinedSign : public testing::TestWithParam<bool> {
+ protected:
+  void SetUp() override { geometry::set_refined_fma(GetParam()); }
+  void TearDown() override { geometry::set_refined_fma(true); }
+};
+
+INSTANTIATE_TEST_SUITE_P(Products, RefinedSign, testing::Bool(),
+                         [](const testing::TestParamInfo<bool>& info) { return info.param ? "Fma" : "Dekker"; });
+
+TEST(DoubleDouble, ProductsByFmaAndBySplittingAreTheSameBits) {
+  // Both products are exact, so their low parts agree; the test's own std::fma is the library's
+  // (exact too). Magnitudes from 2^-300 to 2^300, signs mixed.
+  TestRandom random(5);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const auto draw = [&] {
+      const double hi = std::ldexp(random.uniform() - 0.5, static_cast<int>(random.uniform() * 600) - 300);
+      return geometry::add({hi, 0.0}, {std::ldexp(hi, -55) * (random.uniform() - 0.5), 0.0});
+    };
+    const geometry::DoubleDouble x = draw(), y = draw();
+    const geometry::DoubleDouble by_fma = geometry::multiply<true>(x, y), by_split = geometry::multiply<false>(x, y);
+    ASSERT_EQ(by_fma.hi, by_split.hi) << "trial " << trial;
+    ASSERT_EQ(by_fma.lo, by_split.lo) << "trial " << trial;
+  }
+}
+
+TEST(DoubleDouble, OperationsAreWithinTheirBound) {
   TestRandom random(1);
   for (int trial = 0; trial < 2000; ++trial) {
     const geometry::DoubleDouble x = geometry::add({random.uniform() - 0.5, 0.0}, {std::ldexp(random.uniform(), -60), 0.0});
     const geometry::DoubleDouble y = geometry::difference(random.uniform() * 3, std::ldexp(random.uniform(), -57));
     const mpq_class qx = mpq_class(x.hi) + mpq_class(x.lo), qy = mpq_class(y.hi) + mpq_class(y.lo);
-    for (const auto& [result, exact] : {std::pair{geometry::add(x, y), mpq_class(qx + qy)}, std::pair{geometry::multiply(x, y), mpq_class(qx * qy)}}) {
+    for (const auto& [result, exact] : {std::pair{geometry::add(x, y), mpq_class(qx + qy)}, std::pair{geometry::multiply<true>(x, y), mpq_class(qx * qy)}, std::pair{geometry::multiply<false>(x, y), mpq_class(qx * qy)}}) {
       const mpq_class error = abs(mpq_class(result.hi) + mpq_class(result.lo) - exact);
       ASSERT_LE(error, abs(exact) * mpq_class(geometry::kDoubleDoubleRoundoff)) << "trial " << trial;
     }
   }
 }
 
-TEST(RefinedSign, AgreesWithTheRationalReferenceOnNearSphericalPoints) {
+TEST_P(RefinedSign, AgreesWithTheRationalReferenceOnNearSphericalPoints) {
   // Random points of a sphere, rounded to doubles: within about 2^-53 of it, where the double
   // filter cannot decide and this stage must. Nudged by 2^-30 and 2^-45, where either may.
   for (int d = 2; d <= 4; ++d) {
@@ -89,7 +116,7 @@ TEST(RefinedSign, AgreesWithTheRationalReferenceOnNearSphericalPoints) {
   }
 }
 
-TEST(RefinedSign, CofactorsDecideAsTheWholeDeterminantWithTheTestedRowFirst) {
+TEST_P(RefinedSign, CofactorsDecideAsTheWholeDeterminantWithTheTestedRowFirst) {
   // One candidate's rows, many tested points near its sphere: RefinedCofactors gives what
   // refined_lifted_sign gives on the rows with the tested point's first (the same operations),
   // sign-corrected for the move, and that is the exact sign whenever it decides.
@@ -134,7 +161,7 @@ TEST(RefinedSign, CofactorsDecideAsTheWholeDeterminantWithTheTestedRowFirst) {
   EXPECT_FALSE(cofactors.sign_with(Frame{5, 5, nullptr, high[0].data()}, high[1].data()));
 }
 
-TEST(RefinedSign, OrientationAgreesWithTheRationalReferenceNearAHyperplane) {
+TEST_P(RefinedSign, OrientationAgreesWithTheRationalReferenceNearAHyperplane) {
   // d points on a hyperplane through random directions, rounded to doubles (within about 2^-53
   // of it, where the double filter cannot decide), and one more nudged off it by 0, 2^-45 or
   // 2^-60 of its size: whenever the double-double stage decides, it is the exact sign; and it
@@ -182,7 +209,7 @@ TEST(RefinedSign, OrientationAgreesWithTheRationalReferenceNearAHyperplane) {
   EXPECT_FALSE(geometry::refined_orientation(Frame{3, 3, nullptr, flat[0].data()}, rows.data()));
 }
 
-TEST(RefinedSign, AgreesOnExactlyCosphericalPointsMovedByAFewUlps) {
+TEST_P(RefinedSign, AgreesOnExactlyCosphericalPointsMovedByAFewUlps) {
   // Integer points of a circle, a sphere and a 3-sphere, scaled by 2^20 and moved to an
   // offset (all exact), with one coordinate of the last point moved by k units in the last
   // place (its largest one): the determinant is then about 2^-50 of its terms, or exactly 0 for
@@ -223,7 +250,7 @@ TEST(RefinedSign, AgreesOnExactlyCosphericalPointsMovedByAFewUlps) {
   }
 }
 
-TEST(RefinedSign, LeavesExactTiesUndecided) {
+TEST_P(RefinedSign, LeavesExactTiesUndecided) {
   // Integer points on the circle x^2 + y^2 = 25 and on the sphere of radius 3 through
   // (1, 2, 2): exactly cospherical, so the determinant is 0 and only GMP may say so.
   const std::vector<std::vector<double>> circle = {{3, 4}, {-4, 3}, {0, -5}, {5, 0}};
@@ -236,7 +263,7 @@ TEST(RefinedSign, LeavesExactTiesUndecided) {
   EXPECT_EQ(geometry::lifted_sign(Frame{3, 3, nullptr, sphere[0].data()}, rows.data()), 0);
 }
 
-TEST(RefinedSign, UndecidedWhenOperationsUnderflowOrTheFrameIsTooLarge) {
+TEST_P(RefinedSign, UndecidedWhenOperationsUnderflowOrTheFrameIsTooLarge) {
   // A unit circle scaled to 1e-160: the squares underflow, and the bound no longer holds.
   TestRandom random(5);
   Tally tally;

@@ -3,8 +3,10 @@
 // operations each (refined_sign.cpp uses it between the double filters and GMP).
 //
 // The error-free transformations are exact in round to nearest when nothing overflows or
-// underflows: two_sum always, fast_two_sum when |a| >= |b| (or a is 0), two_product by Dekker's
-// splitting (no fused multiply-add: this build targets plain x86-64, where std::fma is a call).
+// underflows: two_sum always, fast_two_sum when |a| >= |b| (or a is 0), two_product either by
+// Dekker's splitting or, with kFma, by one fused multiply-add. Both give the product's exact
+// error, so the two are the same bits; the build targets plain x86-64, where std::fma is a
+// library call, and refined_sign.cpp compiles its kFma code for processors that have it.
 // On them, add is Joldes, Muller and Popescu's accurate double-word sum (relative error below
 // 3u^2 + 13u^3, u = 2^-53; "Tight and rigorous error bounds for basic building blocks of
 // double-word arithmetic", ACM TOMS 44(2), 2017, algorithm 6) and multiply their double-word
@@ -41,12 +43,19 @@ inline void split(double a, double& high, double& low) {
   high = c - (c - a);
   low = a - high;
 }
+// a * b = hi + lo exactly. kFma: 2 operations, and an instruction only where the caller is
+// compiled for a processor with fused multiply-add (else a correct but slow library call).
+template <bool kFma>
 inline DoubleDouble two_product(double a, double b) {
   const double p = a * b;
-  double ah, al, bh, bl;
-  split(a, ah, al);
-  split(b, bh, bl);
-  return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
+  if constexpr (kFma) {
+    return {p, __builtin_fma(a, b, -p)};
+  } else {
+    double ah, al, bh, bl;
+    split(a, ah, al);
+    split(b, bh, bl);
+    return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
+  }
 }
 }  // namespace double_double_detail
 
@@ -63,9 +72,12 @@ inline DoubleDouble add(DoubleDouble x, DoubleDouble y) {
   return fast_two_sum(v.hi, v.lo + t.lo);
 }
 
+// The same bits with either kFma (two_product is exact both ways, and the rest does not fuse:
+// the library is built with -ffp-contract=off).
+template <bool kFma = false>
 inline DoubleDouble multiply(DoubleDouble x, DoubleDouble y) {
   using namespace double_double_detail;
-  const DoubleDouble c = two_product(x.hi, y.hi);
+  const DoubleDouble c = two_product<kFma>(x.hi, y.hi);
   const double cross = x.hi * y.lo + x.lo * y.hi;
   return fast_two_sum(c.hi, c.lo + cross);
 }

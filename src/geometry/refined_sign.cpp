@@ -19,12 +19,13 @@ using Sizes = RowSizes[kRefinedMaxRows];
 // The row [pi(p - base), |p - base|^2] of p: the differences are exact in double-double, the
 // lift carries dim roundings (its squares and sums). `size` is each entry's absolute value, the
 // leaves of the error bound's tree.
+template <bool kFma>
 void lifted_row(const Frame& f, const double* p, Row& entry, RowSizes& size) {
   DoubleDouble lift;
   double lift_size = 0.0;
   for (int c = 0; c < f.dim; ++c) {
     const DoubleDouble delta = difference(p[c], f.base[c]);
-    lift = add(lift, multiply(delta, delta));
+    lift = add(lift, multiply<kFma>(delta, delta));
     lift_size += delta.hi * delta.hi;
   }
   for (int c = 0; c < f.k; ++c) {
@@ -42,7 +43,7 @@ void lifted_row(const Frame& f, const double* p, Row& entry, RowSizes& size) {
 // parameters so that the loops unroll and the row of each mask (R less its number of columns)
 // is a constant: the generic loops, which took every mask n times to pick those of each size
 // and counted their bits with a library call, took 5 500 instructions per 4 x 4 determinant.
-template <int R, int C>
+template <int R, int C, bool kFma>
 void minors_of(const Entries& entry, const Sizes& size, DoubleDouble (&minor)[1 << C], double (&tree)[1 << C]) {
 #pragma GCC unroll 32
   for (int mask = 1; mask < (1 << C); ++mask) {
@@ -61,7 +62,7 @@ void minors_of(const Entries& entry, const Sizes& size, DoubleDouble (&minor)[1 
         t = size[r][c];
         break;
       }
-      const DoubleDouble term = multiply(entry[r][c], minor[rest]);
+      const DoubleDouble term = multiply<kFma>(entry[r][c], minor[rest]);
       value = add(value, position % 2 ? negate(term) : term);
       t += size[r][c] * tree[rest];
       ++position;
@@ -71,32 +72,33 @@ void minors_of(const Entries& entry, const Sizes& size, DoubleDouble (&minor)[1 
   }
 }
 
-template <int N>
+template <int N, bool kFma>
 void expand(const Entries& entry, const Sizes& size, DoubleDouble& det, double& abs_tree) {
   DoubleDouble minor[1 << N];
   double tree[1 << N];
-  minors_of<N, N>(entry, size, minor, tree);
+  minors_of<N, N, kFma>(entry, size, minor, tree);
   det = minor[(1 << N) - 1];
   abs_tree = tree[(1 << N) - 1];
 }
 
 // expand<n> for a run-time n, 2 <= n <= kRefinedMaxRows.
+template <bool kFma>
 void expand_rows(int n, const Entries& entry, const Sizes& size, DoubleDouble& det, double& abs_tree) {
   switch (n) {
-    case 2: expand<2>(entry, size, det, abs_tree); break;
-    case 3: expand<3>(entry, size, det, abs_tree); break;
-    case 4: expand<4>(entry, size, det, abs_tree); break;
-    default: expand<5>(entry, size, det, abs_tree); break;
+    case 2: expand<2, kFma>(entry, size, det, abs_tree); break;
+    case 3: expand<3, kFma>(entry, size, det, abs_tree); break;
+    case 4: expand<4, kFma>(entry, size, det, abs_tree); break;
+    default: expand<5, kFma>(entry, size, det, abs_tree); break;
   }
 }
 
 // The cofactors along the first row of an N x N matrix whose other rows are entry[0 .. N - 2]:
 // the minors of those rows on every column but c, c = 0 .. N - 1, as minors_of gives them.
-template <int N>
+template <int N, bool kFma>
 void cofactors_of(const Entries& entry, const Sizes& size, DoubleDouble* cofactor, double* tree) {
   DoubleDouble minor[1 << N];
   double minor_tree[1 << N];
-  minors_of<N - 1, N>(entry, size, minor, minor_tree);
+  minors_of<N - 1, N, kFma>(entry, size, minor, minor_tree);
   for (int c = 0; c < N; ++c) {
     cofactor[c] = minor[((1 << N) - 1) & ~(1 << c)];
     tree[c] = minor_tree[((1 << N) - 1) & ~(1 << c)];
@@ -114,25 +116,24 @@ std::optional<int> certified(DoubleDouble det, double abs_tree, int n, int entry
   if (det.hi < -bound) return -1;
   return std::nullopt;
 }
-}  // namespace
 
-std::optional<int> refined_lifted_sign(const Frame& f, const double* const* points) {
+template <bool kFma>
+std::optional<int> lifted_sign_as(const Frame& f, const double* const* points) {
   const int n = f.k + 1;
-  if (n > kRefinedMaxRows) return std::nullopt;
   const FloatingPointWatch watch;
   Entries entry;
   Sizes size;
-  for (int r = 0; r < n; ++r) lifted_row(f, points[r], entry[r], size[r]);
+  for (int r = 0; r < n; ++r) lifted_row<kFma>(f, points[r], entry[r], size[r]);
   DoubleDouble det;
   double abs_tree = 0.0;
-  expand_rows(n, entry, size, det, abs_tree);
+  expand_rows<kFma>(n, entry, size, det, abs_tree);
   if (!watch.clean()) return std::nullopt;
   return certified(det, abs_tree, n, f.dim);
 }
 
-std::optional<int> refined_orientation(const Frame& f, const double* const* points) {
+template <bool kFma>
+std::optional<int> orientation_as(const Frame& f, const double* const* points) {
   const int n = f.k;
-  if (n < 2 || n > kRefinedMaxRows) return std::nullopt;
   const FloatingPointWatch watch;
   Entries entry;
   Sizes size;
@@ -143,47 +144,99 @@ std::optional<int> refined_orientation(const Frame& f, const double* const* poin
     }
   DoubleDouble det;
   double abs_tree = 0.0;
-  expand_rows(n, entry, size, det, abs_tree);
+  expand_rows<kFma>(n, entry, size, det, abs_tree);
   if (!watch.clean()) return std::nullopt;
   // The entries are exact; counting one rounding each, as the lifted rows' spatial entries, only
   // widens the bound.
   return certified(det, abs_tree, n, 1);
 }
 
-void RefinedCofactors::prepare(const Frame& f, const double* const* points) {
-  n_ = f.k + 1;
-  usable_ = false;
-  if (n_ > kRefinedMaxRows) return;
+// The cofactors of n rows whose first is left out, from the n - 1 others (`points`); false on
+// under- or overflow.
+template <bool kFma>
+bool cofactors_as(const Frame& f, const double* const* points, int n, DoubleDouble* cofactor, double* tree) {
   const FloatingPointWatch watch;
   Entries entry;
   Sizes size;
-  for (int r = 0; r + 1 < n_; ++r) lifted_row(f, points[r], entry[r], size[r]);
-  switch (n_) {
-    case 2: cofactors_of<2>(entry, size, cofactor_, tree_); break;
-    case 3: cofactors_of<3>(entry, size, cofactor_, tree_); break;
-    case 4: cofactors_of<4>(entry, size, cofactor_, tree_); break;
-    default: cofactors_of<5>(entry, size, cofactor_, tree_); break;
+  for (int r = 0; r + 1 < n; ++r) lifted_row<kFma>(f, points[r], entry[r], size[r]);
+  switch (n) {
+    case 2: cofactors_of<2, kFma>(entry, size, cofactor, tree); break;
+    case 3: cofactors_of<3, kFma>(entry, size, cofactor, tree); break;
+    case 4: cofactors_of<4, kFma>(entry, size, cofactor, tree); break;
+    default: cofactors_of<5, kFma>(entry, size, cofactor, tree); break;
   }
-  usable_ = watch.clean();
+  return watch.clean();
+}
+
+// minors_of's expansion of the matrix [x; p_1; ...; p_{n-1}] along its first row, in the same
+// order: the same value and tree as lifted_sign_as of those rows, bit for bit.
+template <bool kFma>
+std::optional<int> sign_with_as(const Frame& f, const double* x, int n, const DoubleDouble* cofactor, const double* tree) {
+  const FloatingPointWatch watch;
+  Row entry;
+  RowSizes size;
+  lifted_row<kFma>(f, x, entry, size);
+  DoubleDouble det;
+  double abs_tree = 0.0;
+  for (int c = 0; c < n; ++c) {
+    const DoubleDouble term = multiply<kFma>(entry[c], cofactor[c]);
+    det = add(det, c % 2 ? negate(term) : term);
+    abs_tree += size[c] * tree[c];
+  }
+  if (!watch.clean()) return std::nullopt;
+  return certified(det, abs_tree, n, f.dim);
+}
+
+// The kFma instances, compiled for processors with fused multiply-add: `flatten` inlines the
+// whole computation into them, so that every two_product is the instruction. Called only where
+// the processor has it (uses_fma).
+#define DRANGE_FMA_CODE __attribute__((target("fma"), flatten))
+DRANGE_FMA_CODE std::optional<int> lifted_sign_fma(const Frame& f, const double* const* points) {
+  return lifted_sign_as<true>(f, points);
+}
+DRANGE_FMA_CODE std::optional<int> orientation_fma(const Frame& f, const double* const* points) {
+  return orientation_as<true>(f, points);
+}
+DRANGE_FMA_CODE bool cofactors_fma(const Frame& f, const double* const* points, int n, DoubleDouble* cofactor, double* tree) {
+  return cofactors_as<true>(f, points, n, cofactor, tree);
+}
+DRANGE_FMA_CODE std::optional<int> sign_with_fma(const Frame& f, const double* x, int n, const DoubleDouble* cofactor, const double* tree) {
+  return sign_with_as<true>(f, x, n, cofactor, tree);
+}
+#undef DRANGE_FMA_CODE
+
+bool processor_has_fma() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("fma");
+}
+
+// Read on every call (a load and a branch); written by set_refined_fma only.
+bool uses_fma = processor_has_fma();
+}  // namespace
+
+bool refined_fma() { return uses_fma; }
+
+void set_refined_fma(bool on) { uses_fma = on && processor_has_fma(); }
+
+std::optional<int> refined_lifted_sign(const Frame& f, const double* const* points) {
+  if (f.k + 1 > kRefinedMaxRows) return std::nullopt;
+  return uses_fma ? lifted_sign_fma(f, points) : lifted_sign_as<false>(f, points);
+}
+
+std::optional<int> refined_orientation(const Frame& f, const double* const* points) {
+  if (f.k < 2 || f.k > kRefinedMaxRows) return std::nullopt;
+  return uses_fma ? orientation_fma(f, points) : orientation_as<false>(f, points);
+}
+
+void RefinedCofactors::prepare(const Frame& f, const double* const* points) {
+  n_ = f.k + 1;
+  usable_ = n_ <= kRefinedMaxRows &&
+            (uses_fma ? cofactors_fma(f, points, n_, cofactor_, tree_) : cofactors_as<false>(f, points, n_, cofactor_, tree_));
 }
 
 std::optional<int> RefinedCofactors::sign_with(const Frame& f, const double* x) const {
   if (!usable_) return std::nullopt;
-  const FloatingPointWatch watch;
-  Row entry;
-  RowSizes size;
-  lifted_row(f, x, entry, size);
-  // minors_of's expansion of the matrix [x; p_1; ...; p_{n-1}] along its first row, in the same
-  // order: the same value and tree as refined_lifted_sign of those rows, bit for bit.
-  DoubleDouble det;
-  double abs_tree = 0.0;
-  for (int c = 0; c < n_; ++c) {
-    const DoubleDouble term = multiply(entry[c], cofactor_[c]);
-    det = add(det, c % 2 ? negate(term) : term);
-    abs_tree += size[c] * tree_[c];
-  }
-  if (!watch.clean()) return std::nullopt;
-  const std::optional<int> s = certified(det, abs_tree, n_, f.dim);
+  const std::optional<int> s = uses_fma ? sign_with_fma(f, x, n_, cofactor_, tree_) : sign_with_as<false>(f, x, n_, cofactor_, tree_);
   // x's row moved from last to first: n - 1 transpositions.
   if (s && n_ % 2 == 0) return -*s;
   return s;

@@ -33,6 +33,14 @@ std::optional<int> refined_lifted_sign(const Frame& frame, const double* const* 
 // a grid in cylindrical coordinates, which GMP decided at 4 700 instructions each (3 x 3).
 std::optional<int> refined_orientation(const Frame& frame, const double* const* points);
 
+// Whether this stage computes its exact products by fused multiply-adds (2 operations instead of
+// Dekker's 17; the same bits, so the same signs): by default where the processor has them.
+// set_refined_fma(false) selects the other code, as on processors without them (tests run both);
+// set_refined_fma(true) takes the processor's choice again. Not to be called while another
+// thread triangulates.
+bool refined_fma();
+void set_refined_fma(bool on);
+
 // The same stage for many points x against the same first frame.k points: the cofactors along
 // x's row are computed once (prepare), and each test (sign_with) is then a dot product of
 // double-double numbers. The value and bound are those of refined_lifted_sign on the rows with
