@@ -99,6 +99,9 @@ Wide<4> spatial4(const std::int64_t (*x)[kMaxColumns], int r0, int r1, int r2, i
          m(r0, r1, 1, 2) * m(r2, r3, 0, 3) - m(r0, r1, 1, 3) * m(r2, r3, 0, 2) + m(r0, r1, 2, 3) * m(r2, r3, 0, 1);
 }
 
+// The index of the pair a < b of 0 .. 3: (0,1) 0, (0,2) 1, (0,3) 2, (1,2) 3, (1,3) 4, (2,3) 5.
+constexpr int pair_index(int a, int b) { return a == 0 ? b - 1 : a + b; }
+
 }  // namespace
 
 std::optional<int> wide_orientation(const Frame& f, const double* const* points) {
@@ -174,47 +177,103 @@ std::optional<int> wide_lifted_sign(const Frame& f, const double* const* points)
 }
 
 bool WideLiftedCofactors::prepare(const Frame& f, const double* const* points) {
-  if (!(f.dim == 3 && f.k == 3 && f.axes == nullptr)) return false;
+  if (!(f.k == f.dim && f.axes == nullptr)) return false;
+  dim_ = f.dim;
+  if (f.dim == 3) return prepare_fixed<3>(f, points);
+  if (f.dim == 4) return prepare_fixed<4>(f, points);
+  return false;
+}
+
+template <int D>
+bool WideLiftedCofactors::prepare_fixed(const Frame& f, const double* const* points) {
   CommonUnit unit;
-  for (int c = 0; c < 3; ++c) {
+  for (int c = 0; c < D; ++c) {
     unit.include(f.base[c]);
-    for (int r = 0; r < 3; ++r) unit.include(points[r][c]);
+    for (int r = 0; r < D; ++r) unit.include(points[r][c]);
   }
   unit_ = unit.unit();
-  for (int c = 0; c < 3; ++c)
+  for (int c = 0; c < D; ++c)
     if (!unit.scaled(f.base[c], base_[c])) return false;
-  std::int64_t x[3][kMaxColumns];
-  Int128 lift[3];
-  if (!lifted_rows(f, unit, base_, points, 3, x, lift)) return false;
-  // x's row is the fourth of four: cofactor signs -, +, -, + along it. The minor without
-  // column c, along the lift column, from the 2 x 2 spatial minors of the row pairs.
-  Wide<2> m[3][3];
-  pair_minors3(x, m);
-  for (int c = 0; c < 3; ++c) {
-    // Rows 0, 1, 2 over the two spatial columns other than c and the lift: along the lift
-    // column, L_0 m(rows 1, 2) - L_1 m(rows 0, 2) + L_2 m(rows 0, 1), the minors without c.
-    const Wide<4> minor = Wide<2>::from(lift[0]) * m[2][c] - Wide<2>::from(lift[1]) * m[1][c] + Wide<2>::from(lift[2]) * m[0][c];
-    spatial_[c] = (c & 1) ? minor : -minor;
+  std::int64_t x[kMaxColumns][kMaxColumns];
+  Int128 lift[kMaxColumns];
+  if (!lifted_rows(f, unit, base_, points, D, x, lift)) return false;
+  if constexpr (D == 4) {
+    prepare4(x, lift);
+  } else {
+    // x's row is the fourth of four: cofactor signs -, +, -, + along it. The minor without
+    // column c, along the lift column, from the 2 x 2 spatial minors of the row pairs.
+    Wide<2> m[3][3];
+    pair_minors3(x, m);
+    for (int c = 0; c < 3; ++c) {
+      // Rows 0, 1, 2 over the two spatial columns other than c and the lift: along the lift
+      // column, L_0 m(rows 1, 2) - L_1 m(rows 0, 2) + L_2 m(rows 0, 1), the minors without c.
+      const Wide<4> minor = Wide<2>::from(lift[0]) * m[2][c] - Wide<2>::from(lift[1]) * m[1][c] + Wide<2>::from(lift[2]) * m[0][c];
+      spatial3_[c] = (c & 1) ? minor : -minor;
+    }
+    lift3_ = Wide<1>::from(x[2][0]) * m[0][0] - Wide<1>::from(x[2][1]) * m[0][1] + Wide<1>::from(x[2][2]) * m[0][2];
   }
-  lift_ = Wide<1>::from(x[2][0]) * m[0][0] - Wide<1>::from(x[2][1]) * m[0][1] + Wide<1>::from(x[2][2]) * m[0][2];
   return true;
 }
 
+void WideLiftedCofactors::prepare4(const std::int64_t (*x)[4], const Int128* lift) {
+  // x's row is the fifth of five: cofactor signs +, -, +, -, + along it. The minor without
+  // spatial column c, along its last (lift) column: sum_r (-1)^(r + 3) L_r S(r, c), S(r, c) the
+  // 3 x 3 spatial minor without row r and column c, along its last row t from the 2 x 2 minors
+  // of the two rows before it. S below 2^189, each product below 2^315, the sum below 2^317.
+  Wide<2> m[6][6];
+  for (int r = 0; r < 4; ++r)
+    for (int s = r + 1; s < 4; ++s)
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b)
+          m[pair_index(r, s)][pair_index(a, b)] = Wide<2>::from(minor2(x[r][a], x[r][b], x[s][a], x[s][b]));
+  for (int c = 0; c < 4; ++c) {
+    int col[3], n = 0;
+    for (int k = 0; k < 4; ++k)
+      if (k != c) col[n++] = k;
+    const int i = col[0], j = col[1], k = col[2];
+    Wide<5> minor = Wide<5>::from(0);
+    for (int r = 0; r < 4; ++r) {
+      int row[3], n_rows = 0;
+      for (int q = 0; q < 4; ++q)
+        if (q != r) row[n_rows++] = q;
+      const int pair = pair_index(row[0], row[1]), t = row[2];
+      const Wide<3> s = Wide<1>::from(x[t][i]) * m[pair][pair_index(j, k)] - Wide<1>::from(x[t][j]) * m[pair][pair_index(i, k)] +
+                        Wide<1>::from(x[t][k]) * m[pair][pair_index(i, j)];
+      const Wide<5> term = Wide<2>::from(lift[r]) * s;
+      minor = (r & 1) ? minor + term : minor - term;
+    }
+    spatial4_[c] = (c & 1) ? -minor : minor;
+  }
+  lift4_ = spatial4(x, 0, 1, 2, 3);
+}
+
 std::optional<int> WideLiftedCofactors::sign_with(const double* point) const {
+  return dim_ == 3 ? sign_with_fixed<3>(point) : sign_with_fixed<4>(point);
+}
+
+template <int D>
+std::optional<int> WideLiftedCofactors::sign_with_fixed(const double* point) const {
   CommonUnit unit;
-  for (int c = 0; c < 3; ++c) unit.include(point[c]);
+  for (int c = 0; c < D; ++c) unit.include(point[c]);
   if (unit.unit() < unit_) return std::nullopt;  // a lower set bit than the rows' unit
   unit.set_unit(unit_);
-  std::int64_t x[3];
+  std::int64_t x[D];
   Int128 lift = 0;
-  for (int c = 0; c < 3; ++c) {
+  for (int c = 0; c < D; ++c) {
     if (!difference(unit, point[c], base_[c], x[c])) return std::nullopt;
     lift += product(x[c], x[c]);
   }
-  // Each product below 2^315, the sum below 2^317.
-  Wide<5> det = Wide<2>::from(lift) * lift_;
-  for (int c = 0; c < 3; ++c) det = det + Wide<1>::from(x[c]) * spatial_[c];
-  return det.sign();
+  if constexpr (D == 4) {
+    // Each product below 2^379, the sum below 2^381.
+    Wide<6> det = Wide<2>::from(lift) * lift4_;
+    for (int c = 0; c < 4; ++c) det = det + Wide<1>::from(x[c]) * spatial4_[c];
+    return det.sign();
+  } else {
+    // Each product below 2^315, the sum below 2^317.
+    Wide<5> det = Wide<2>::from(lift) * lift3_;
+    for (int c = 0; c < 3; ++c) det = det + Wide<1>::from(x[c]) * spatial3_[c];
+    return det.sign();
+  }
 }
 
 }  // namespace drange::geometry

@@ -27,27 +27,36 @@ std::optional<int> wide_orientation(const Frame& frame, const double* const* poi
 // dimensions, exactly; nullopt otherwise.
 std::optional<int> wide_lifted_sign(const Frame& frame, const double* const* points);
 
-// wide_lifted_sign in 3D for many last points x against the same first three rows (a
+// wide_lifted_sign in 3D and 4D for many last points x against the same first dim rows (a
 // candidate's sphere, tested against each point that its filters leave): the cofactors along
 // x's row computed once, in the rows' common unit, then each x is a dot product. (In 2D the
 // whole 3 x 3 determinant costs less than the cofactors: measured, a 2D decimal grid +6%.)
 class WideLiftedCofactors {
  public:
-  // The cofactors of the first three of the four rows that `points` will hold, frame.base
-  // included (frame.dim = frame.k = 3, all axes); false when they do not fit or in another
-  // frame.
+  // The cofactors of the first dim of the dim + 1 rows that `points` will hold, frame.base
+  // included (frame.dim = frame.k = 3 or 4, all axes); false when they do not fit or in
+  // another frame.
   bool prepare(const Frame& frame, const double* const* points);
   // The sign with x as the last row, the same as wide_lifted_sign's; nullopt when x needs a
   // finer unit than the rows (a lower set bit) or its difference does not fit.
   std::optional<int> sign_with(const double* x) const;
 
  private:
+  template <int D>
+  bool prepare_fixed(const Frame& frame, const double* const* points);
+  void prepare4(const std::int64_t (*x)[4], const Int128* lift);
+  template <int D>
+  std::optional<int> sign_with_fixed(const double* x) const;
+
+  int dim_ = 0;
   int unit_ = 0;
-  Int128 base_[3] = {};
-  // The cofactors of x's spatial entries (below 2^253) and of its lift (below 2^189), signs
-  // folded in: det = sum_c x_c spatial_[c] + |x - base|^2 lift_.
-  Wide<4> spatial_[3] = {};
-  Wide<3> lift_ = {};
+  Int128 base_[4] = {};
+  // The cofactors of x's spatial entries and of its lift, signs folded in: det = sum_c x_c
+  // spatial_[c] + |x - base|^2 lift_. In 3D below 2^253 and 2^189, in 4D below 2^317 and 2^253.
+  Wide<4> spatial3_[3] = {};
+  Wide<3> lift3_ = {};
+  Wide<5> spatial4_[4] = {};
+  Wide<4> lift4_ = {};
 };
 
 }  // namespace drange::geometry
