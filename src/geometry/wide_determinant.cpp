@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "geometry/double_bits.hpp"
 #include "geometry/error_bound.hpp"
@@ -90,17 +91,29 @@ void pair_minors3(const std::int64_t (*x)[kMaxColumns], Wide<2> (&m)[3][3]) {
   }
 }
 
-// The 4 x 4 spatial determinant of rows r0, r1, r2, r3 of x, by Laplace along the first two:
-// the sum over column pairs a < b of (-1)^(a + b + 1) M(r0, r1; a, b) M(r2, r3; the other
-// two). Each 2 x 2 minor below 2^125, each product below 2^250, the sum below 2^253.
-Wide<4> spatial4(const std::int64_t (*x)[kMaxColumns], int r0, int r1, int r2, int r3) {
-  const auto m = [&](int r, int s, int a, int b) { return Wide<2>::from(minor2(x[r][a], x[r][b], x[s][a], x[s][b])); };
-  return m(r0, r1, 0, 1) * m(r2, r3, 2, 3) - m(r0, r1, 0, 2) * m(r2, r3, 1, 3) + m(r0, r1, 0, 3) * m(r2, r3, 1, 2) +
-         m(r0, r1, 1, 2) * m(r2, r3, 0, 3) - m(r0, r1, 1, 3) * m(r2, r3, 0, 2) + m(r0, r1, 2, 3) * m(r2, r3, 0, 1);
-}
-
 // The index of the pair a < b of 0 .. 3: (0,1) 0, (0,2) 1, (0,3) 2, (1,2) 3, (1,3) 4, (2,3) 5.
 constexpr int pair_index(int a, int b) { return a == 0 ? b - 1 : a + b; }
+
+// The six 2 x 2 minors of rows r, s of x on the column pairs, by pair_index.
+void pair_minors4(const std::int64_t (*x)[kMaxColumns], int r, int s, Wide<2> (&m)[6]) {
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) m[pair_index(a, b)] = Wide<2>::from(minor2(x[r][a], x[r][b], x[s][a], x[s][b]));
+}
+
+// A 4 x 4 determinant by Laplace along its first two rows, from their 2 x 2 minors (top) and
+// the last two rows' (bottom): the sum over column pairs a < b of (-1)^(a + b + 1) top(a, b)
+// bottom(the other two). Each minor below 2^125, each product below 2^250, the sum below 2^253.
+Wide<4> laplace4(const Wide<2> (&top)[6], const Wide<2> (&bottom)[6]) {
+  return top[0] * bottom[5] - top[1] * bottom[4] + top[2] * bottom[3] + top[3] * bottom[2] - top[4] * bottom[1] + top[5] * bottom[0];
+}
+
+// The 4 x 4 spatial determinant of rows r0, r1, r2, r3 of x.
+Wide<4> spatial4(const std::int64_t (*x)[kMaxColumns], int r0, int r1, int r2, int r3) {
+  Wide<2> top[6], bottom[6];
+  pair_minors4(x, r0, r1, top);
+  pair_minors4(x, r2, r3, bottom);
+  return laplace4(top, bottom);
+}
 
 }  // namespace
 
@@ -219,13 +232,11 @@ void WideLiftedCofactors::prepare4(const std::int64_t (*x)[4], const Int128* lif
   // x's row is the fifth of five: cofactor signs +, -, +, -, + along it. The minor without
   // spatial column c, along its last (lift) column: sum_r (-1)^(r + 3) L_r S(r, c), S(r, c) the
   // 3 x 3 spatial minor without row r and column c, along its last row t from the 2 x 2 minors
-  // of the two rows before it. S below 2^189, each product below 2^315, the sum below 2^317.
-  Wide<2> m[6][6];
-  for (int r = 0; r < 4; ++r)
-    for (int s = r + 1; s < 4; ++s)
-      for (int a = 0; a < 4; ++a)
-        for (int b = a + 1; b < 4; ++b)
-          m[pair_index(r, s)][pair_index(a, b)] = Wide<2>::from(minor2(x[r][a], x[r][b], x[s][a], x[s][b]));
+  // of the two rows before it: rows (1, 2), (0, 2), (0, 1), (0, 1) for r = 0 .. 3. S below
+  // 2^189, each product below 2^315, the sum below 2^317.
+  Wide<2> m[6][6];  // by row pair, then column pair; the row pairs used: (0,1), (0,2), (1,2), (2,3)
+  for (const auto& [r, s] : {std::pair{0, 1}, std::pair{0, 2}, std::pair{1, 2}, std::pair{2, 3}})
+    pair_minors4(x, r, s, m[pair_index(r, s)]);
   for (int c = 0; c < 4; ++c) {
     int col[3], n = 0;
     for (int k = 0; k < 4; ++k)
@@ -236,15 +247,16 @@ void WideLiftedCofactors::prepare4(const std::int64_t (*x)[4], const Int128* lif
       int row[3], n_rows = 0;
       for (int q = 0; q < 4; ++q)
         if (q != r) row[n_rows++] = q;
-      const int pair = pair_index(row[0], row[1]), t = row[2];
-      const Wide<3> s = Wide<1>::from(x[t][i]) * m[pair][pair_index(j, k)] - Wide<1>::from(x[t][j]) * m[pair][pair_index(i, k)] +
-                        Wide<1>::from(x[t][k]) * m[pair][pair_index(i, j)];
+      const Wide<2>(&pair)[6] = m[pair_index(row[0], row[1])];
+      const int t = row[2];
+      const Wide<3> s = Wide<1>::from(x[t][i]) * pair[pair_index(j, k)] - Wide<1>::from(x[t][j]) * pair[pair_index(i, k)] +
+                        Wide<1>::from(x[t][k]) * pair[pair_index(i, j)];
       const Wide<5> term = Wide<2>::from(lift[r]) * s;
       minor = (r & 1) ? minor + term : minor - term;
     }
     spatial4_[c] = (c & 1) ? -minor : minor;
   }
-  lift4_ = spatial4(x, 0, 1, 2, 3);
+  lift4_ = laplace4(m[pair_index(0, 1)], m[pair_index(2, 3)]);  // the spatial determinant of rows 0 .. 3
 }
 
 std::optional<int> WideLiftedCofactors::sign_with(const double* point) const {
