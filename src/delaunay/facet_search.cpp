@@ -950,7 +950,13 @@ int SearchKernel<D>::exact_beats(std::int32_t id) {
     refined_.prepare(frame, rows_.data());
     refined_ready_ = true;
   }
-  if (const std::optional<int> refined = refined_.sign_with(frame, points_.point(id))) {
+  // The candidate's cofactors in double-double, applied in doubles first: most tests that the
+  // search's filter leaves to this stage are against a candidate within rounding of the facet's
+  // hyperplane, whose cofactors in doubles are noise (points that a decimal lattice puts on
+  // one plane), and not near-ties of their own.
+  std::optional<int> refined = refined_.quick_sign_with(frame, points_.point(id));
+  if (!refined) refined = refined_.sign_with(frame, points_.point(id));
+  if (refined) {
     note_outcome(tie_balance_, false);
     return sigma_ * *refined;
   }

@@ -232,6 +232,45 @@ void RefinedCofactors::prepare(const Frame& f, const double* const* points) {
   n_ = f.k + 1;
   usable_ = n_ <= kRefinedMaxRows &&
             (uses_fma ? cofactors_fma(f, points, n_, cofactor_, tree_) : cofactors_as<false>(f, points, n_, cofactor_, tree_));
+  if (!usable_) return;
+  // Each cofactor is an (n - 1)-minor of rows whose entries carry f.dim roundings: certified's
+  // bound for such a minor (the 1 + 2^-40 also covers this product's roundings).
+  const double gamma = refined_gamma(laplace_roundings(n_ - 1, f.dim)) * (1 + 0x1p-40);
+  for (int c = 0; c < n_; ++c) error_[c] = gamma * tree_[c];
+}
+
+std::optional<int> RefinedCofactors::quick_sign_with(const Frame& f, const double* x) const {
+  constexpr int kMaxDim = 11;  // prepare_points' limit
+  if (!usable_ || f.dim > kMaxDim) return std::nullopt;
+  // x's row R in doubles: the differences carry one rounding, the lift dim + 1 (at most
+  // eps = gamma(dim + 1) relative to the exact row r).
+  double delta[kMaxDim];
+  double lift = 0.0;
+  for (int c = 0; c < f.dim; ++c) {
+    delta[c] = x[c] - f.base[c];
+    lift += delta[c] * delta[c];
+  }
+  // The exact value is sum_c +-C_c r_c, C_c the exact cofactor, within error_[c] of hi + lo:
+  //   |sum +-C_c r_c - v| <= sum (|lo_c| + error_c) |r_c| + eps sum |hi_c| |r_c| + gamma(n) mag,
+  // v and mag = sum |hi_c| |R_c| as computed, |r_c| <= |R_c| / (1 - eps). gamma_bound(n + dim
+  // + 1) covers the last two terms (Higham's lemma 3.3 and its 1e-6 margin), 1 + 2^-40 the
+  // rest's roundings, kUnderflowError what underflow adds (points scaled below 1).
+  double v = 0.0, mag = 0.0, low = 0.0;
+  for (int c = 0; c < n_; ++c) {
+    const double r = c < f.k ? delta[f.axis(c)] : lift;
+    const double term = cofactor_[c].hi * r;
+    v += c % 2 ? -term : term;
+    mag += std::fabs(term);
+    low += (std::fabs(cofactor_[c].lo) + error_[c]) * std::fabs(r);
+  }
+  if (!(mag > kFilterUnderflow && mag < kFilterOverflow)) return std::nullopt;  // also NaN
+  const double bound = (gamma_bound(n_ + f.dim + 1) * mag + low + kUnderflowError) * (1 + 0x1p-40);
+  int s = 0;
+  if (v > bound) s = 1;
+  else if (v < -bound) s = -1;
+  else return std::nullopt;
+  // x's row moved from last to first: n - 1 transpositions (as sign_with).
+  return n_ % 2 == 0 ? -s : s;
 }
 
 std::optional<int> RefinedCofactors::sign_with(const Frame& f, const double* x) const {
