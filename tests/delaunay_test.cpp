@@ -580,6 +580,23 @@ TEST(DelaunayVariants, PlateauFacetsPruneTheirFlatSide) {
   }
 }
 
+TEST(DelaunayVariants, CandidatesOnADecimalLatticePlaneGetABall) {
+  // Points rounded to multiples of 0.04, a CSV file's kind of coordinates: four of them on one
+  // lattice plane and one circle are within rounding of both in binary, so the candidate's
+  // sphere through them is computed from noise in doubles and had no ball; each such candidate
+  // sent the search through every point on the facet's open side. The double-double cofactors
+  // give it its ball.
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  PointCloud points{3, {}};
+  for (int i = 0; i < 5000 * 3; ++i) points.coords.push_back(std::round(u(rng) * 25) / 25);
+  const Triangulation t = drange::delaunay(points);
+  expect_valid(points, t, "points rounded to 0.04");
+  // Points tested per simplex (a deterministic work counter, not a time): 4.63 with the
+  // double-double ball, 23.5 without it (2026-11-26).
+  EXPECT_LT(double(t.stats.points_tested) / double(t.stats.simplices), 8.0);
+}
+
 TEST(DelaunayStatistics, CountsAreConsistent) {
   const PointCloud points = drange::generate_points(Distribution::Uniform, 10000, 2, 31);
   const Triangulation t = drange::delaunay(points);

@@ -179,6 +179,15 @@ class SearchKernel final : public FacetSearch::Kernel {
   static constexpr unsigned kFlatAxesUnknown = ~0u;
   unsigned flat_axes_ = kFlatAxesUnknown;
   void reset_box();
+  // The candidate's ball from the coefficients w of sigma I(p, x) = w . r_x with error bounds
+  // error(j): the centre, the box and the ball's reach; false when w's lift coefficient is not
+  // certainly away from 0 (no trustworthy box) or the reach is not finite. Inlined into
+  // set_candidate, whose bounds are computed as it reads them.
+  template <class Error>
+  [[gnu::always_inline]] inline bool set_ball(const double* w, const Error& error);
+  // set_ball from the candidate's double-double cofactors (refined_), for a candidate whose
+  // doubles give no trustworthy box.
+  bool ball_from_refined();
   // SphereShell (sphere_shell.hpp): the candidate's form around the shell's centre, and the
   // tests that use it: a point's sign of sigma I(p, x) (0 when undecided), and a node's proof
   // that none of its points beats the candidate.
@@ -527,35 +536,64 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
     w_[static_cast<std::size_t>(j)] = v;
     w_abs_[static_cast<std::size_t>(j)] = a;
   }
-  // The sphere through F and p is {x : I(p, x) / O(p) = 0}; I(p, x) / O(p) is the power of x,
-  // so its centre is f0 - w_spatial / (2 w_lift) and it passes through f0. The box is the
-  // sphere's bounding box, enlarged by the effect of the minors' error bounds on the centre.
   // w_j is a d-minor over all columns but j: d units, plus one for the lift column (j < d).
   candidate_exact_ = lifted_exact_;
   for (int j = 0; candidate_exact_ && j <= d; ++j)
     candidate_exact_ = w_abs_[static_cast<std::size_t>(j)] < exact_limits_[static_cast<std::size_t>(j < d ? d + 1 : d)];
   if (shell_ != nullptr) set_shell_form();
   shell_scan_ = shell_form_;
-  const double gamma = lifted_gamma_;
-  const double wd = w_[static_cast<std::size_t>(d)];
   // The error bounds of w's entries: its rounding, gamma |w|, and what underflow adds.
-  const double ewd = gamma * w_abs_[static_cast<std::size_t>(d)] + geometry::kUnderflowError;
-  if (!filters_hold_ || !(std::fabs(wd) > 2 * ewd) || !std::isfinite(wd)) {  // no trustworthy box
-    reset_box();
-    return;
+  const auto error = [this](int j) { return lifted_gamma_ * w_abs_[static_cast<std::size_t>(j)] + geometry::kUnderflowError; };
+  if (filters_hold_ && set_ball(w_.data(), error)) return;
+  // No trustworthy box from the doubles: the candidate within rounding of the facet's
+  // hyperplane and its sphere not large (the four points of a decimal lattice's plane on one
+  // circle: every entry of w is then noise). The double-double cofactors give the sphere,
+  // unless the recent exact tests were mostly ties: then the four points are more likely
+  // exactly on one circle (a grid's square), where no sphere is defined and the cofactors
+  // would be spent for nothing (the fixed-width stage decides those tests first).
+  if (filters_hold_ && tie_balance_ <= 0 && ball_from_refined()) return;
+  reset_box();
+}
+
+template <int D>
+bool SearchKernel<D>::ball_from_refined() {
+  const int d = dim();
+  const geometry::Frame frame{d, d, nullptr, f0_};
+  if (!refined_ready_) {
+    refined_.prepare(frame, rows_.data());
+    refined_ready_ = true;
   }
-  double radius2 = 0.0, error = 0.0, magnitude = 0.0;
+  // sigma I(p, x) = sum_j sigma coefficient_j r_j(x), each coefficient within its slack (and
+  // kUnderflowError for the underflow of the ball's own products, as for w).
+  std::array<double, kMaxRow> w, error;
+  if (!refined_.linear_form(w.data(), error.data())) return false;
+  for (int j = 0; j <= d; ++j) {
+    w[static_cast<std::size_t>(j)] *= sigma_;
+    error[static_cast<std::size_t>(j)] += geometry::kUnderflowError;
+  }
+  return set_ball(w.data(), [&error](int j) { return error[static_cast<std::size_t>(j)]; });
+}
+
+template <int D>
+template <class Error>
+bool SearchKernel<D>::set_ball(const double* w, const Error& error) {
+  const int d = dim();
+  // The sphere through F and p is {x : I(p, x) / O(p) = 0}; I(p, x) / O(p) is the power of x,
+  // so its centre is f0 - w_spatial / (2 w_lift) and it passes through f0. The box is the
+  // sphere's bounding box, enlarged by the effect of w's error bounds on the centre.
+  const double wd = w[d], ewd = error(d);
+  if (!(std::fabs(wd) > 2 * ewd) || !std::isfinite(wd)) return false;  // no trustworthy box
+  double radius2 = 0.0, centre_error = 0.0, magnitude = 0.0;
   // Two divisions, then products: a reciprocal's rounding adds u to the centre's relative
   // error, which the reach's 8 (d + 4) u of slack below covers, and to its error's, which the
   // factor 1 + 1e-6 does.
   const double minus_half_over_wd = -1 / (2 * wd), half_over_margin = 1 / (2 * (std::fabs(wd) - ewd));
   for (int k = 0; k < d; ++k) {
-    const double dc = w_[static_cast<std::size_t>(k)] * minus_half_over_wd;
-    const double err = (gamma * w_abs_[static_cast<std::size_t>(k)] + geometry::kUnderflowError + 2 * std::fabs(dc) * ewd) *
-                       half_over_margin;
+    const double dc = w[k] * minus_half_over_wd;
+    const double err = (error(k) + 2 * std::fabs(dc) * ewd) * half_over_margin;
     centre_[static_cast<std::size_t>(k)] = f0_[k] + dc;
     radius2 += dc * dc;
-    error += err;  // the 1-norm of the centre's error: at least its length, without a root
+    centre_error += err;  // the 1-norm of the centre's error: at least its length, without a root
     magnitude = std::max(magnitude, std::fabs(centre_[static_cast<std::size_t>(k)]));
   }
   const double radius = std::sqrt(radius2);
@@ -563,12 +601,9 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
   // computing the centre, the radius and the box bounds, and what underflow can take from the
   // smallest of them (a radius below 2^-511 may lose its squares: at most sqrt(d) 2^-537; a
   // ball needs a reach above 2^-400 anyway).
-  const double reach = radius + 2 * error * (1 + 1e-6) +
+  const double reach = radius + 2 * centre_error * (1 + 1e-6) +
                        8 * (d + 4) * geometry::kUnitRoundoff * (magnitude + radius) + 0x1p-500;
-  if (!std::isfinite(reach)) {
-    reset_box();
-    return;
-  }
+  if (!std::isfinite(reach)) return false;
   for (int k = 0; k < d; ++k) {
     lower_[static_cast<std::size_t>(k)] = centre_[static_cast<std::size_t>(k)] - reach;
     upper_[static_cast<std::size_t>(k)] = centre_[static_cast<std::size_t>(k)] + reach;
@@ -594,6 +629,7 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
     }
     shell_scan_ = apart2 <= 0.0625 * shell_view_.rho;
   }
+  return true;
 }
 
 template <int D>

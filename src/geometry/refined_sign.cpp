@@ -239,6 +239,17 @@ void RefinedCofactors::prepare(const Frame& f, const double* const* points) {
   for (int c = 0; c < n_; ++c) error_[c] = gamma * tree_[c];
 }
 
+bool RefinedCofactors::linear_form(double* coefficient, double* slack) const {
+  if (!usable_) return false;
+  // sign_with's expansion has x's row first: moving it last takes n - 1 transpositions.
+  const double last = n_ % 2 == 0 ? -1.0 : 1.0;
+  for (int c = 0; c < n_; ++c) {
+    coefficient[c] = (c % 2 ? -last : last) * cofactor_[c].hi;
+    slack[c] = std::fabs(cofactor_[c].lo) + error_[c];
+  }
+  return true;
+}
+
 std::optional<int> RefinedCofactors::quick_sign_with(const Frame& f, const double* x) const {
   constexpr int kMaxDim = 11;  // prepare_points' limit
   if (!usable_ || f.dim > kMaxDim) return std::nullopt;

@@ -61,6 +61,11 @@ class RefinedCofactors {
   // search's own filter decides none of the tests against them, and these do. Only for points
   // scaled below 1 in magnitude (PointStore::scaled), where kUnderflowError bounds underflow.
   std::optional<int> quick_sign_with(const Frame& frame, const double* x) const;
+  // The determinant with x as the last row as a linear form in x's lifted row r (frame.k
+  // spatial entries on the frame's axes, then the lift): det = sum_c exact_c r_c, where
+  // |coefficient[c] - exact_c| <= slack[c]; n = frame.k + 1 entries each. false when prepare
+  // could not.
+  bool linear_form(double* coefficient, double* slack) const;
 
  private:
   int n_ = 0;
