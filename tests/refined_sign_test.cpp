@@ -242,6 +242,17 @@ TEST_P(RefinedSign, OrientationAgreesWithTheRationalReferenceNearAHyperplane) {
       const Frame frame{d, d, nullptr, points[0].data()};
       const std::optional<int> refined = geometry::refined_orientation(frame, simplex.data() + 1);
       SCOPED_TRACE("d=" + std::to_string(d) + " trial=" + std::to_string(trial));
+      if (d <= geometry::kRefinedMaxRows) {
+        // The facet's cofactors (its first d - 1 rows) give what the whole determinant gives with
+        // the last point's row first, sign-corrected for the move.
+        geometry::RefinedCofactors cofactors;
+        cofactors.prepare_orientation(frame, simplex.data() + 1);
+        std::vector<const double*> first = {simplex.back()};
+        first.insert(first.end(), simplex.begin() + 1, simplex.end() - 1);
+        std::optional<int> whole = geometry::refined_orientation(frame, first.data());
+        if (whole && d % 2 == 0) whole = -*whole;  // d - 1 transpositions
+        ASSERT_EQ(cofactors.sign_with(frame, simplex.back()), whole);
+      }
       if (exact != 0) ++cases;
       if (refined) {
         ++decided;

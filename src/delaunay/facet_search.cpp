@@ -333,6 +333,9 @@ class SearchKernel final : public FacetSearch::Kernel {
   // at its first near-tie.
   geometry::RefinedCofactors refined_;
   bool refined_ready_ = false;
+  // The same for the facet's hyperplane (exact_open_side), computed at the facet's first.
+  geometry::RefinedCofactors plane_refined_;
+  bool plane_refined_ready_ = false;
   // Ties minus near-ties among the recent exact lifted tests (tie_balance_, exact_beats) and
   // orientations (plane_tie_balance_, exact_open_side), within +-kTieBalanceLimit: positive, the
   // fixed-width integer stage goes before the double-double one. They order the stages only;
@@ -443,6 +446,7 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
   sigma_ = sigma;
   f0_ = points_.point(facet[0]);
   flat_axes_ = kFlatAxesUnknown;
+  plane_refined_ready_ = false;
   for (int k = 0; k < d; ++k) centroid_[static_cast<std::size_t>(k)] = 0.0;
   for (int i = 0; i < d; ++i) {
     const double* f = points_.point(facet[i]);
@@ -940,7 +944,16 @@ int SearchKernel<D>::exact_open_side(std::int32_t id) {
   // As exact_beats: the fixed-width stage first where the recent exact orientations were mostly
   // ties (a grid's coplanar points), which the double-double stage never decides.
   std::optional<int> small = plane_tie_balance_ > 0 ? geometry::small_integer_orientation(frame, rows_.data()) : std::nullopt;
-  const int s = small ? *small : geometry::exact_orientation(frame, rows_.data());
+  if (!small) {
+    // The double-double stage as the facet's cofactors, computed at its first near-tie: each
+    // point then costs a dot product (a 4D lattice's hyperplanes hold many points).
+    if (!plane_refined_ready_) {
+      plane_refined_.prepare_orientation(frame, rows_.data());
+      plane_refined_ready_ = true;
+    }
+    small = plane_refined_.sign_with(frame, x);
+  }
+  const int s = small ? *small : geometry::integer_orientation(frame, rows_.data());
   note_outcome(plane_tie_balance_, s == 0);
   if (s == 0) plane_ties_.record(facet_, id);
   return sigma_ * s;

@@ -133,8 +133,6 @@ std::optional<int> small_integer_orientation(const Frame& f, const double* const
   return s;
 }
 
-namespace {
-
 int integer_orientation(const Frame& f, const double* const* points) {
   if (const std::optional<int> s = small_integer_orientation(f, points)) return *s;
   ++exact_count;
@@ -151,6 +149,8 @@ int integer_orientation(const Frame& f, const double* const* points) {
     }
   return bareiss_in_place(x.matrix, f.k, x.pivot) * sgn(x.matrix[static_cast<std::size_t>(f.k * f.k - 1)]);
 }
+
+namespace {
 
 // The integer lifted rows of `count` points in `scale`'s units (spatial entries in 2^shift,
 // the lift in 2^(2 shift)): row r is [pi(p_r - base), |p_r - base|^2], f.k + 1 entries, into

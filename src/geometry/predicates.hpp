@@ -45,6 +45,9 @@ int exact_orientation(const Frame& frame, const double* const* points);
 // differences fit), before the double-double stage, for a caller that meets mostly ties;
 // nullopt when it does not apply.
 std::optional<int> small_integer_orientation(const Frame& frame, const double* const* points);
+// exact_orientation's last stage alone (integers: fixed-width, else GMP), for a caller that ran
+// the double-double stage its own way (RefinedCofactors::prepare_orientation, refined_sign.hpp).
+int integer_orientation(const Frame& frame, const double* const* points);
 
 // Sign of the (k+1)x(k+1) determinant with rows [pi(p_i - base), |p_i - base|^2], i = 1..k+1.
 // Unperturbed: zero when the k+2 points (base and the k+1 given) are cospherical.

@@ -131,34 +131,50 @@ std::optional<int> lifted_sign_as(const Frame& f, const double* const* points) {
   return certified(det, abs_tree, n, f.dim);
 }
 
+// The row [pi(p - base)] of orientation's determinant: exact differences, their sizes.
+void difference_row(const Frame& f, const double* p, Row& entry, RowSizes& size) {
+  for (int c = 0; c < f.k; ++c) {
+    entry[c] = difference(p[f.axis(c)], f.base[f.axis(c)]);
+    size[c] = std::fabs(entry[c].hi);
+  }
+}
+
+// A row of the lifted determinant (kLifted) or of orientation's.
+template <bool kFma, bool kLifted>
+void row_of(const Frame& f, const double* p, Row& entry, RowSizes& size) {
+  if constexpr (kLifted) lifted_row<kFma>(f, p, entry, size);
+  else difference_row(f, p, entry, size);
+}
+
+// Roundings in each entry: the lift's f.dim (differences are exact; counting one rounding for
+// them, as the lifted rows' spatial entries do, only widens the bound).
+template <bool kLifted>
+int entry_roundings(const Frame& f) {
+  return kLifted ? f.dim : 1;
+}
+
 template <bool kFma>
 std::optional<int> orientation_as(const Frame& f, const double* const* points) {
   const int n = f.k;
   const FloatingPointWatch watch;
   Entries entry;
   Sizes size;
-  for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c) {
-      entry[r][c] = difference(points[r][f.axis(c)], f.base[f.axis(c)]);
-      size[r][c] = std::fabs(entry[r][c].hi);
-    }
+  for (int r = 0; r < n; ++r) difference_row(f, points[r], entry[r], size[r]);
   DoubleDouble det;
   double abs_tree = 0.0;
   expand_rows<kFma>(n, entry, size, det, abs_tree);
   if (!watch.clean()) return std::nullopt;
-  // The entries are exact; counting one rounding each, as the lifted rows' spatial entries, only
-  // widens the bound.
-  return certified(det, abs_tree, n, 1);
+  return certified(det, abs_tree, n, entry_roundings<false>(f));
 }
 
-// The cofactors of n rows whose first is left out, from the n - 1 others (`points`); false on
-// under- or overflow.
-template <bool kFma>
+// The cofactors of n rows whose first is left out, from the n - 1 others (`points`), lifted or
+// orientation's; false on under- or overflow.
+template <bool kFma, bool kLifted>
 bool cofactors_as(const Frame& f, const double* const* points, int n, DoubleDouble* cofactor, double* tree) {
   const FloatingPointWatch watch;
   Entries entry;
   Sizes size;
-  for (int r = 0; r + 1 < n; ++r) lifted_row<kFma>(f, points[r], entry[r], size[r]);
+  for (int r = 0; r + 1 < n; ++r) row_of<kFma, kLifted>(f, points[r], entry[r], size[r]);
   switch (n) {
     case 2: cofactors_of<2, kFma>(entry, size, cofactor, tree); break;
     case 3: cofactors_of<3, kFma>(entry, size, cofactor, tree); break;
@@ -169,13 +185,13 @@ bool cofactors_as(const Frame& f, const double* const* points, int n, DoubleDoub
 }
 
 // minors_of's expansion of the matrix [x; p_1; ...; p_{n-1}] along its first row, in the same
-// order: the same value and tree as lifted_sign_as of those rows, bit for bit.
-template <bool kFma>
+// order: the same value and tree as lifted_sign_as (orientation_as) of those rows, bit for bit.
+template <bool kFma, bool kLifted>
 std::optional<int> sign_with_as(const Frame& f, const double* x, int n, const DoubleDouble* cofactor, const double* tree) {
   const FloatingPointWatch watch;
   Row entry;
   RowSizes size;
-  lifted_row<kFma>(f, x, entry, size);
+  row_of<kFma, kLifted>(f, x, entry, size);
   DoubleDouble det;
   double abs_tree = 0.0;
   for (int c = 0; c < n; ++c) {
@@ -184,7 +200,7 @@ std::optional<int> sign_with_as(const Frame& f, const double* x, int n, const Do
     abs_tree += size[c] * tree[c];
   }
   if (!watch.clean()) return std::nullopt;
-  return certified(det, abs_tree, n, f.dim);
+  return certified(det, abs_tree, n, entry_roundings<kLifted>(f));
 }
 
 // The kFma instances, compiled for processors with fused multiply-add: `flatten` inlines the
@@ -197,11 +213,14 @@ DRANGE_FMA_CODE std::optional<int> lifted_sign_fma(const Frame& f, const double*
 DRANGE_FMA_CODE std::optional<int> orientation_fma(const Frame& f, const double* const* points) {
   return orientation_as<true>(f, points);
 }
+template <bool kLifted>
 DRANGE_FMA_CODE bool cofactors_fma(const Frame& f, const double* const* points, int n, DoubleDouble* cofactor, double* tree) {
-  return cofactors_as<true>(f, points, n, cofactor, tree);
+  return cofactors_as<true, kLifted>(f, points, n, cofactor, tree);
 }
-DRANGE_FMA_CODE std::optional<int> sign_with_fma(const Frame& f, const double* x, int n, const DoubleDouble* cofactor, const double* tree) {
-  return sign_with_as<true>(f, x, n, cofactor, tree);
+template <bool kLifted>
+DRANGE_FMA_CODE std::optional<int> sign_with_fma(const Frame& f, const double* x, int n, const DoubleDouble* cofactor,
+                                                 const double* tree) {
+  return sign_with_as<true, kLifted>(f, x, n, cofactor, tree);
 }
 #undef DRANGE_FMA_CODE
 
@@ -228,10 +247,16 @@ std::optional<int> refined_orientation(const Frame& f, const double* const* poin
   return uses_fma ? orientation_fma(f, points) : orientation_as<false>(f, points);
 }
 
+template <bool kLifted>
+bool RefinedCofactors::prepare_as(const Frame& f, const double* const* points) {
+  return uses_fma ? cofactors_fma<kLifted>(f, points, n_, cofactor_, tree_)
+                  : cofactors_as<false, kLifted>(f, points, n_, cofactor_, tree_);
+}
+
 void RefinedCofactors::prepare(const Frame& f, const double* const* points) {
   n_ = f.k + 1;
-  usable_ = n_ <= kRefinedMaxRows &&
-            (uses_fma ? cofactors_fma(f, points, n_, cofactor_, tree_) : cofactors_as<false>(f, points, n_, cofactor_, tree_));
+  lifted_ = true;
+  usable_ = n_ <= kRefinedMaxRows && prepare_as<true>(f, points);
   if (!usable_) return;
   // Each cofactor is an (n - 1)-minor of rows whose entries carry f.dim roundings: certified's
   // bound for such a minor (the 1 + 2^-40 also covers this product's roundings).
@@ -239,8 +264,14 @@ void RefinedCofactors::prepare(const Frame& f, const double* const* points) {
   for (int c = 0; c < n_; ++c) error_[c] = gamma * tree_[c];
 }
 
+void RefinedCofactors::prepare_orientation(const Frame& f, const double* const* points) {
+  n_ = f.k;
+  lifted_ = false;
+  usable_ = n_ >= 2 && n_ <= kRefinedMaxRows && prepare_as<false>(f, points);
+}
+
 bool RefinedCofactors::linear_form(double* coefficient, double* slack) const {
-  if (!usable_) return false;
+  if (!usable_ || !lifted_) return false;
   // sign_with's expansion has x's row first: moving it last takes n - 1 transpositions.
   const double last = n_ % 2 == 0 ? -1.0 : 1.0;
   for (int c = 0; c < n_; ++c) {
@@ -252,7 +283,7 @@ bool RefinedCofactors::linear_form(double* coefficient, double* slack) const {
 
 std::optional<int> RefinedCofactors::quick_sign_with(const Frame& f, const double* x) const {
   constexpr int kMaxDim = 11;  // prepare_points' limit
-  if (!usable_ || f.dim > kMaxDim) return std::nullopt;
+  if (!usable_ || !lifted_ || f.dim > kMaxDim) return std::nullopt;
   // x's row R in doubles: the differences carry one rounding, the lift dim + 1 (at most
   // eps = gamma(dim + 1) relative to the exact row r).
   double delta[kMaxDim];
@@ -286,7 +317,9 @@ std::optional<int> RefinedCofactors::quick_sign_with(const Frame& f, const doubl
 
 std::optional<int> RefinedCofactors::sign_with(const Frame& f, const double* x) const {
   if (!usable_) return std::nullopt;
-  const std::optional<int> s = uses_fma ? sign_with_fma(f, x, n_, cofactor_, tree_) : sign_with_as<false>(f, x, n_, cofactor_, tree_);
+  std::optional<int> s;
+  if (lifted_) s = uses_fma ? sign_with_fma<true>(f, x, n_, cofactor_, tree_) : sign_with_as<false, true>(f, x, n_, cofactor_, tree_);
+  else s = uses_fma ? sign_with_fma<false>(f, x, n_, cofactor_, tree_) : sign_with_as<false, false>(f, x, n_, cofactor_, tree_);
   // x's row moved from last to first: n - 1 transpositions.
   if (s && n_ % 2 == 0) return -*s;
   return s;

@@ -50,6 +50,12 @@ class RefinedCofactors {
  public:
   // `points`: the first frame.k of lifted_sign's frame.k + 1 points.
   void prepare(const Frame& frame, const double* const* points);
+  // The same for orientation's determinant (frame.k rows of differences, 2 <= frame.k <=
+  // kRefinedMaxRows): `points` the first frame.k - 1 of its frame.k points, and sign_with then
+  // refined_orientation's sign with x as the last (a facet's hyperplane, asked about many
+  // points within rounding of it: points of a decimal lattice's hyperplane in 4D). Not for
+  // quick_sign_with and linear_form, which then decline.
+  void prepare_orientation(const Frame& frame, const double* const* points);
   // lifted_sign's determinant with x as the last point, when proved; nullopt as
   // refined_lifted_sign, or when prepare could not (too many rows, or under- or overflow).
   // `frame` must be prepare's.
@@ -68,8 +74,12 @@ class RefinedCofactors {
   bool linear_form(double* coefficient, double* slack) const;
 
  private:
+  template <bool kLifted>
+  bool prepare_as(const Frame& frame, const double* const* points);
+
   int n_ = 0;
   bool usable_ = false;
+  bool lifted_ = true;  // prepare's determinant, else prepare_orientation's
   DoubleDouble cofactor_[kRefinedMaxRows];
   double tree_[kRefinedMaxRows] = {};
   // Bounds on |cofactor_[c] - the exact cofactor| (hi + lo against the exact value).
