@@ -76,6 +76,17 @@ def families(rng):
         p = tuple(round(rng.random(), 2) for _ in range(3))
         rounded[p] = None
     yield "rounded3", [list(p) for p in rounded]
+    # The twenty-third round's denser decimal data: 100 000 distinct points rounded to 0.01 in
+    # 3D (a tenth of the lattice's sites taken: four points of a lattice plane on one circle
+    # abound), and 20 000 rounded to 0.05 in 4D.
+    rounded = {}
+    while len(rounded) < 100000:
+        rounded[tuple(round(rng.random(), 2) for _ in range(3))] = None
+    yield "rounded3_dense", [list(p) for p in rounded]
+    rounded = {}
+    while len(rounded) < N:
+        rounded[tuple(round(rng.random() * 20) / 20 for _ in range(4))] = None
+    yield "rounded4", [list(p) for p in rounded]
 
 
 def main():
