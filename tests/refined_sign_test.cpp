@@ -103,7 +103,7 @@ TEST(DoubleDouble, OperationsAreWithinTheirBound) {
 TEST_P(RefinedSign, AgreesWithTheRationalReferenceOnNearSphericalPoints) {
   // Random points of a sphere, rounded to doubles: within about 2^-53 of it, where the double
   // filter cannot decide and this stage must. Nudged by 2^-30 and 2^-45, where either may.
-  for (int d = 2; d <= 4; ++d) {
+  for (int d = 2; d <= 5; ++d) {
     for (const double centre : {0.0, 0.3, 1e6}) {
       for (const double nudge : {0.0, 0x1p-30, -0x1p-45}) {
         SCOPED_TRACE("d=" + std::to_string(d) + " centre=" + std::to_string(centre) + " nudge=" + std::to_string(nudge));
@@ -120,7 +120,7 @@ TEST_P(RefinedSign, CofactorsDecideAsTheWholeDeterminantWithTheTestedRowFirst) {
   // One candidate's rows, many tested points near its sphere: RefinedCofactors gives what
   // refined_lifted_sign gives on the rows with the tested point's first (the same operations),
   // sign-corrected for the move, and that is the exact sign whenever it decides.
-  for (int d = 2; d <= 4; ++d) {
+  for (int d = 2; d <= 5; ++d) {
     for (const double centre : {0.0, 0.3}) {
       TestRandom random(static_cast<std::uint64_t>(d * 77) + (centre != 0.0));
       std::vector<std::vector<double>> points;
@@ -152,13 +152,13 @@ TEST_P(RefinedSign, CofactorsDecideAsTheWholeDeterminantWithTheTestedRowFirst) {
     }
   }
   // Too many rows: it declines rather than decide.
-  std::vector<std::vector<double>> high(6, std::vector<double>(5, 0.0));
-  for (int i = 1; i < 6; ++i) high[static_cast<std::size_t>(i)][static_cast<std::size_t>(i - 1)] = 1.0;
+  std::vector<std::vector<double>> high(7, std::vector<double>(6, 0.0));
+  for (int i = 1; i < 7; ++i) high[static_cast<std::size_t>(i)][static_cast<std::size_t>(i - 1)] = 1.0;
   std::vector<const double*> rows;
-  for (int i = 1; i < 6; ++i) rows.push_back(high[static_cast<std::size_t>(i)].data());
+  for (int i = 1; i < 7; ++i) rows.push_back(high[static_cast<std::size_t>(i)].data());
   geometry::RefinedCofactors cofactors;
-  cofactors.prepare(Frame{5, 5, nullptr, high[0].data()}, rows.data());
-  EXPECT_FALSE(cofactors.sign_with(Frame{5, 5, nullptr, high[0].data()}, high[1].data()));
+  cofactors.prepare(Frame{6, 6, nullptr, high[0].data()}, rows.data());
+  EXPECT_FALSE(cofactors.sign_with(Frame{6, 6, nullptr, high[0].data()}, high[1].data()));
 }
 
 TEST_P(RefinedSign, QuickSignDecidesAgainstCandidatesWithinRoundingOfTheFacetsPlane) {
@@ -329,12 +329,13 @@ TEST_P(RefinedSign, UndecidedWhenOperationsUnderflowOrTheFrameIsTooLarge) {
   Tally tally;
   for (int trial = 0; trial < 50; ++trial) check_case(2, random, 0.0, 1e-160, 0x1p-70, tally);
   EXPECT_EQ(tally.decided, 0);
-  // 5D: six rows, beyond kRefinedMaxRows.
+  // 6D: seven rows, beyond kRefinedMaxRows.
+  static_assert(geometry::kRefinedMaxRows == 6);
   std::vector<std::vector<double>> points;
-  for (int i = 0; i < 7; ++i) points.push_back(on_sphere(random, 5, 0.0, 1.0, i == 6 ? 0x1p-70 : 0.0));
+  for (int i = 0; i < 8; ++i) points.push_back(on_sphere(random, 6, 0.0, 1.0, i == 7 ? 0x1p-70 : 0.0));
   std::vector<const double*> rows;
-  for (int i = 1; i < 7; ++i) rows.push_back(points[static_cast<std::size_t>(i)].data());
-  EXPECT_FALSE(geometry::refined_lifted_sign(Frame{5, 5, nullptr, points[0].data()}, rows.data()));
+  for (int i = 1; i < 8; ++i) rows.push_back(points[static_cast<std::size_t>(i)].data());
+  EXPECT_FALSE(geometry::refined_lifted_sign(Frame{6, 6, nullptr, points[0].data()}, rows.data()));
 }
 
 }  // namespace

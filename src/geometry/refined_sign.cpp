@@ -45,7 +45,7 @@ void lifted_row(const Frame& f, const double* p, Row& entry, RowSizes& size) {
 // and counted their bits with a library call, took 5 500 instructions per 4 x 4 determinant.
 template <int R, int C, bool kFma>
 void minors_of(const Entries& entry, const Sizes& size, DoubleDouble (&minor)[1 << C], double (&tree)[1 << C]) {
-#pragma GCC unroll 32
+#pragma GCC unroll 64
   for (int mask = 1; mask < (1 << C); ++mask) {
     const int m = __builtin_popcount(static_cast<unsigned>(mask));
     if (m > R) continue;
@@ -88,7 +88,8 @@ void expand_rows(int n, const Entries& entry, const Sizes& size, DoubleDouble& d
     case 2: expand<2, kFma>(entry, size, det, abs_tree); break;
     case 3: expand<3, kFma>(entry, size, det, abs_tree); break;
     case 4: expand<4, kFma>(entry, size, det, abs_tree); break;
-    default: expand<5, kFma>(entry, size, det, abs_tree); break;
+    case 5: expand<5, kFma>(entry, size, det, abs_tree); break;
+    default: expand<6, kFma>(entry, size, det, abs_tree); break;
   }
 }
 
@@ -179,7 +180,8 @@ bool cofactors_as(const Frame& f, const double* const* points, int n, DoubleDoub
     case 2: cofactors_of<2, kFma>(entry, size, cofactor, tree); break;
     case 3: cofactors_of<3, kFma>(entry, size, cofactor, tree); break;
     case 4: cofactors_of<4, kFma>(entry, size, cofactor, tree); break;
-    default: cofactors_of<5, kFma>(entry, size, cofactor, tree); break;
+    case 5: cofactors_of<5, kFma>(entry, size, cofactor, tree); break;
+    default: cofactors_of<6, kFma>(entry, size, cofactor, tree); break;
   }
   return watch.clean();
 }
