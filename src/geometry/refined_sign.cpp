@@ -2,6 +2,7 @@
 #include "geometry/refined_sign.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 #include "geometry/double_double.hpp"
 #include "geometry/error_bound.hpp"
@@ -81,16 +82,24 @@ void expand(const Entries& entry, const Sizes& size, DoubleDouble& det, double& 
   abs_tree = tree[(1 << N) - 1];
 }
 
-// expand<n> for a run-time n, 2 <= n <= kRefinedMaxRows.
+// body(std::integral_constant<int, n>) for a run-time n, 2 <= n <= kRefinedMaxRows: the
+// templates above take the size at compile time.
+template <class Body>
+void with_rows(int n, const Body& body) {
+  static_assert(kRefinedMaxRows == 6, "one case per size");
+  switch (n) {
+    case 2: body(std::integral_constant<int, 2>{}); break;
+    case 3: body(std::integral_constant<int, 3>{}); break;
+    case 4: body(std::integral_constant<int, 4>{}); break;
+    case 5: body(std::integral_constant<int, 5>{}); break;
+    default: body(std::integral_constant<int, 6>{}); break;
+  }
+}
+
+// expand<n> for a run-time n.
 template <bool kFma>
 void expand_rows(int n, const Entries& entry, const Sizes& size, DoubleDouble& det, double& abs_tree) {
-  switch (n) {
-    case 2: expand<2, kFma>(entry, size, det, abs_tree); break;
-    case 3: expand<3, kFma>(entry, size, det, abs_tree); break;
-    case 4: expand<4, kFma>(entry, size, det, abs_tree); break;
-    case 5: expand<5, kFma>(entry, size, det, abs_tree); break;
-    default: expand<6, kFma>(entry, size, det, abs_tree); break;
-  }
+  with_rows(n, [&](auto rows) { expand<rows, kFma>(entry, size, det, abs_tree); });
 }
 
 // The cofactors along the first row of an N x N matrix whose other rows are entry[0 .. N - 2]:
@@ -176,13 +185,7 @@ bool cofactors_as(const Frame& f, const double* const* points, int n, DoubleDoub
   Entries entry;
   Sizes size;
   for (int r = 0; r + 1 < n; ++r) row_of<kFma, kLifted>(f, points[r], entry[r], size[r]);
-  switch (n) {
-    case 2: cofactors_of<2, kFma>(entry, size, cofactor, tree); break;
-    case 3: cofactors_of<3, kFma>(entry, size, cofactor, tree); break;
-    case 4: cofactors_of<4, kFma>(entry, size, cofactor, tree); break;
-    case 5: cofactors_of<5, kFma>(entry, size, cofactor, tree); break;
-    default: cofactors_of<6, kFma>(entry, size, cofactor, tree); break;
-  }
+  with_rows(n, [&](auto rows) { cofactors_of<rows, kFma>(entry, size, cofactor, tree); });
   return watch.clean();
 }
 
