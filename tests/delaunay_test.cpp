@@ -179,6 +179,21 @@ TEST(DelaunayOracle, DegenerateTinyInputsMatchPerturbedBruteForce) {
        cloud(3, {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 3e-80, 1e-80, 2e-80, -1e-80, 2e-80, 1e-80,
                  1e-80, -3e-80, 2e-80, -2e-80, 1e-80, -1e-80, 1e-80, 1e-80, -3e-80})},
   };
+  // Distinct points rounded to 0.1 (as from a CSV file): in binary their lattice's planes and
+  // spheres are within rounding, so candidates on a facet's lattice plane get their ball from
+  // the double-double cofactors, and their near-ties are decided there; the oracle is exact.
+  std::mt19937_64 rng(23);
+  for (const auto& [d, n] : {std::pair{2, 30}, std::pair{3, 24}, std::pair{4, 15}}) {
+    std::set<std::vector<double>> distinct;
+    while (distinct.size() < static_cast<std::size_t>(n)) {
+      std::vector<double> p(static_cast<std::size_t>(d));
+      for (double& x : p) x = static_cast<double>(rng() % 6) / 10;
+      distinct.insert(p);
+    }
+    PointCloud c{d, {}};
+    for (const auto& p : distinct) c.coords.insert(c.coords.end(), p.begin(), p.end());
+    cases.emplace_back("rounded to 0.1 in " + std::to_string(d) + "D", c);
+  }
   for (const auto& [name, points] : cases) {
     const Triangulation t = drange::delaunay(points);
     EXPECT_EQ(canonical(t), perturbed_oracle(points)) << name;
@@ -407,6 +422,11 @@ TEST(DelaunayRobustness, DecimalInputsGiveTheSameTriangulationOnEveryProductCode
     for (int i = 0; i < (d == 4 ? 600 : 3000); ++i)
       for (int k = 0; k < d; ++k) c.coords.push_back(std::round(u(rng) * 100) / 100);
     cases.emplace_back("rounded to 0.01 in " + std::to_string(d) + "D", c);
+  }
+  {
+    PointCloud c{5, {}};  // 5D, whose lifted rows the double-double stage takes since it has six
+    for (int i = 0; i < 300 * 5; ++i) c.coords.push_back(std::round(u(rng) * 10) / 10);
+    cases.emplace_back("rounded to 0.1 in 5D", c);
   }
   {
     PointCloud c = grid(3, 9);
