@@ -3,7 +3,7 @@
 // Every predicate returns the exact sign of a determinant of the input doubles: a fast
 // floating-point evaluation whose error bound is derived (see error_bound.hpp), then, only when
 // that bound cannot decide, an exact evaluation in integers: fixed-width ones up to 5 x 5 where
-// the values fit (wide_determinant.hpp), GMP's otherwise. Between the two, up to 5 x 5,
+// the values fit (wide_determinant.hpp), GMP's otherwise. Between the two, up to 6 x 6,
 // the same evaluation in double-double arithmetic (refined_sign.hpp) decides the near-ties of
 // points within rounding of a sphere or of a hyperplane. A zero never reaches the
 // algorithm where it would matter: `lifted_sign_perturbed` breaks every tie by a symbolic
