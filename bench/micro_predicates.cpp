@@ -1,6 +1,7 @@
 // bench/micro_predicates.cpp: Google Benchmark microbenchmarks of the exact predicates
-// (src/geometry/predicates.hpp), of one facet search (src/delaunay/facet_search.hpp) and of a
-// whole triangulation of 10 000 uniform 2D points.
+// (src/geometry/predicates.hpp), of one facet search (src/delaunay/facet_search.hpp), of the
+// point preparation and the kd-tree build (src/delaunay/prepare_points.hpp,
+// src/spatial/kdtree.hpp) and of a whole triangulation of 10 000 uniform 2D points.
 //
 // Predicates in d = 2, 3, 5 on three kinds of input:
 //   random   uniform points in [0,1)^d: the floating-point filter decides;
@@ -25,6 +26,7 @@
 #include "drange/delaunay.hpp"
 #include "drange/generate.hpp"
 #include "geometry/predicates.hpp"
+#include "spatial/kdtree.hpp"
 
 namespace {
 
@@ -199,6 +201,37 @@ void BM_FacetSearch(benchmark::State& state) {
   state.SetLabel(std::to_string(d) + "D uniform " + std::to_string(n));
 }
 BENCHMARK(BM_FacetSearch)->Args({2, 100000})->Args({3, 100000})->Args({5, 5000});
+
+// The preparation on one thread (duplicates, scaling, the kd-tree and its leaf blocks), and the
+// kd-tree's build alone within it, on uniform points (n points, dimension d).
+void BM_PreparePoints(benchmark::State& state) {
+  const int d = static_cast<int>(state.range(0));
+  const auto n = static_cast<std::size_t>(state.range(1));
+  const drange::PointCloud cloud = drange::generate_points(drange::Distribution::Uniform, n, d, 1);
+  std::vector<drange::Duplicate> duplicates;
+  drange::engine::Team team(1);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(drange::engine::prepare_points(cloud, drange::engine::search_leaf_size(d), duplicates, team).size);
+  state.SetLabel(std::to_string(d) + "D uniform " + std::to_string(n) + ", 1 thread");
+}
+BENCHMARK(BM_PreparePoints)->Args({2, 1000000})->Args({3, 200000})->Unit(benchmark::kMillisecond);
+
+void BM_KdTreeBuild(benchmark::State& state) {
+  const int d = static_cast<int>(state.range(0));
+  const auto n = static_cast<std::size_t>(state.range(1));
+  const drange::PointCloud cloud = drange::generate_points(drange::Distribution::Uniform, n, d, 1);
+  std::vector<double> coords;
+  for (auto _ : state) {
+    state.PauseTiming();
+    coords.assign(cloud.coords.begin(), cloud.coords.end());  // build_and_reorder rewrites them
+    drange::spatial::KdTree tree;
+    state.ResumeTiming();
+    tree.build_and_reorder(coords.data(), static_cast<std::int32_t>(n), d, drange::engine::search_leaf_size(d), 1);
+    benchmark::DoNotOptimize(tree.nodes().size());
+  }
+  state.SetLabel(std::to_string(d) + "D uniform " + std::to_string(n) + ", 1 thread");
+}
+BENCHMARK(BM_KdTreeBuild)->Args({2, 1000000})->Args({3, 200000})->Unit(benchmark::kMillisecond);
 
 // End to end: the whole triangulation of 10 000 uniform 2D points (seed 1).
 void BM_Delaunay2D10k(benchmark::State& state) {
