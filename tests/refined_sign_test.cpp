@@ -118,8 +118,10 @@ TEST_P(RefinedSign, AgreesWithTheRationalReferenceOnNearSphericalPoints) {
 
 TEST_P(RefinedSign, CofactorsDecideAsTheWholeDeterminantWithTheTestedRowFirst) {
   // One candidate's rows, many tested points near its sphere: RefinedCofactors gives what
-  // refined_lifted_sign gives on the rows with the tested point's first (the same operations),
-  // sign-corrected for the move, and that is the exact sign whenever it decides.
+  // refined_lifted_sign gives on the rows with the tested point's first and the candidate's (the
+  // last of prepare's) next (the same operations), sign-corrected for the moves, and that is the
+  // exact sign whenever it decides. The two-step preparation (the facet's rows once, then each
+  // candidate) gives the same.
   for (int d = 2; d <= 5; ++d) {
     for (const double centre : {0.0, 0.3}) {
       TestRandom random(static_cast<std::uint64_t>(d * 77) + (centre != 0.0));
@@ -128,19 +130,25 @@ TEST_P(RefinedSign, CofactorsDecideAsTheWholeDeterminantWithTheTestedRowFirst) {
       std::vector<const double*> rows;
       for (int i = 1; i < d + 1; ++i) rows.push_back(points[static_cast<std::size_t>(i)].data());
       const Frame frame{d, d, nullptr, points[0].data()};
-      geometry::RefinedCofactors cofactors;
+      geometry::RefinedCofactors cofactors, in_two_steps;
       cofactors.prepare(frame, rows.data());
+      // Another candidate first, then this one: the facet's minors serve both.
+      const std::vector<double> other = on_sphere(random, d, centre, 1.0, 0.0);
+      in_two_steps.prepare_facet(frame, rows.data());
+      in_two_steps.prepare_candidate(frame, other.data());
+      in_two_steps.prepare_candidate(frame, rows.back());
       int decided = 0;
       for (int trial = 0; trial < 300; ++trial) {
         const double nudge = trial % 3 == 0 ? 0.0 : (trial % 3 == 1 ? 0x1p-40 : -0x1p-48);
         const std::vector<double> x = on_sphere(random, d, centre, 1.0, nudge);
         SCOPED_TRACE("d=" + std::to_string(d) + " centre=" + std::to_string(centre) + " trial=" + std::to_string(trial));
         const std::optional<int> fast = cofactors.sign_with(frame, x.data());
-        std::vector<const double*> first = {x.data()};
-        first.insert(first.end(), rows.begin(), rows.end());
+        std::vector<const double*> first = {x.data(), rows.back()};
+        first.insert(first.end(), rows.begin(), rows.end() - 1);
         std::optional<int> whole = geometry::refined_lifted_sign(frame, first.data());
-        if (whole && d % 2 == 1) whole = -*whole;  // x's row moved by d transpositions
+        if (whole) whole = -*whole;  // [x, candidate, rest] to [rest, candidate, x]: 2d - 1 transpositions
         ASSERT_EQ(fast, whole);
+        ASSERT_EQ(in_two_steps.sign_with(frame, x.data()), fast);
         std::vector<const double*> last = rows;
         last.push_back(x.data());
         if (fast) {

@@ -188,6 +188,8 @@ class SearchKernel final : public FacetSearch::Kernel {
   // set_ball from the candidate's double-double cofactors (refined_), for a candidate whose
   // doubles give no trustworthy box.
   bool ball_from_refined();
+  // refined_ for the current candidate, once.
+  void prepare_refined(const geometry::Frame& frame);
   // SphereShell (sphere_shell.hpp): the candidate's form around the shell's centre, and the
   // tests that use it: a point's sign of sigma I(p, x) (0 when undecided), and a node's proof
   // that none of its points beats the candidate.
@@ -330,9 +332,9 @@ class SearchKernel final : public FacetSearch::Kernel {
   // same ties (SearchOptions::remember_ties).
   KnownTies plane_ties_, sphere_ties_;
   // The double-double stage's cofactors for the candidate's sphere (refined_sign.hpp), computed
-  // at its first near-tie.
+  // at its first near-tie (prepare_refined); the facet's part of them at the facet's first.
   geometry::RefinedCofactors refined_;
-  bool refined_ready_ = false;
+  bool refined_ready_ = false, refined_facet_ready_ = false;
   // The same for the facet's hyperplane (exact_open_side), computed at the facet's first.
   geometry::RefinedCofactors plane_refined_;
   bool plane_refined_ready_ = false;
@@ -446,7 +448,7 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
   sigma_ = sigma;
   f0_ = points_.point(facet[0]);
   flat_axes_ = kFlatAxesUnknown;
-  plane_refined_ready_ = false;
+  plane_refined_ready_ = refined_facet_ready_ = false;
   for (int k = 0; k < d; ++k) centroid_[static_cast<std::size_t>(k)] = 0.0;
   for (int i = 0; i < d; ++i) {
     const double* f = points_.point(facet[i]);
@@ -561,13 +563,22 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
 }
 
 template <int D>
+void SearchKernel<D>::prepare_refined(const geometry::Frame& frame) {
+  if (refined_ready_) return;
+  // A facet prepares 1.5 candidates (points rounded to 0.05 in 4D): its rows' minors serve them all.
+  if (!refined_facet_ready_) {
+    refined_.prepare_facet(frame, rows_.data());
+    refined_facet_ready_ = true;
+  }
+  refined_.prepare_candidate(frame, rows_[static_cast<std::size_t>(dim() - 1)]);
+  refined_ready_ = true;
+}
+
+template <int D>
 bool SearchKernel<D>::ball_from_refined() {
   const int d = dim();
   const geometry::Frame frame{d, d, nullptr, f0_};
-  if (!refined_ready_) {
-    refined_.prepare(frame, rows_.data());
-    refined_ready_ = true;
-  }
+  prepare_refined(frame);
   // sigma I(p, x) = sum_j sigma coefficient_j r_j(x), each coefficient within its slack (and
   // kUnderflowError for the underflow of the ball's own products, as for w).
   std::array<double, kMaxRow> w, error;
@@ -1001,10 +1012,7 @@ int SearchKernel<D>::exact_beats(std::int32_t id) {
   // The double-double stage first: it decides the near-ties, which are most, and never a tie,
   // so the known ties are looked up only for what it leaves (on 100 rings of a cylinder, the
   // lookups before it took 16% of the time).
-  if (!refined_ready_) {
-    refined_.prepare(frame, rows_.data());
-    refined_ready_ = true;
-  }
+  prepare_refined(frame);
   // The candidate's cofactors in double-double, applied in doubles first: they decide the tests
   // that the search's filter left only because the candidate's cofactors in doubles are noise
   // (a candidate within rounding of the facet's hyperplane, as a decimal lattice puts it), not

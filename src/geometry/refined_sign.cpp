@@ -37,37 +37,50 @@ void lifted_row(const Frame& f, const double* p, Row& entry, RowSizes& size) {
   size[f.k] = lift_size;
 }
 
+// The minor of the rows R - m .. R - 1 (m the bits of `mask`) on the columns of `mask`, expanded
+// along its first row `entry` over the minors of the rows below it (`minor`, by column set),
+// and its absolute-value tree over the sizes. The one expansion that minors_of and
+// candidate_cofactors share, so that both give the same bits.
+template <int C, bool kFma>
+inline void expand_along(const DoubleDouble* entry, const double* size, int mask, const DoubleDouble* minor,
+                         const double* tree, DoubleDouble& value, double& t) {
+  value = DoubleDouble{};
+  t = 0.0;
+  int position = 0;
+#pragma GCC unroll 8
+  for (int c = 0; c < C; ++c) {
+    if (!(mask & (1 << c))) continue;
+    const int rest = mask & ~(1 << c);
+    if (rest == 0) {
+      value = entry[c];
+      t = size[c];
+      break;
+    }
+    const DoubleDouble term = multiply<kFma>(entry[c], minor[rest]);
+    value = add(value, position % 2 ? negate(term) : term);
+    t += size[c] * tree[rest];
+    ++position;
+  }
+}
+
 // The minors of the R x C entries (R <= C) by Laplace expansion over every minor of the last m
 // rows (m = 1 .. R), by column set: the minor of rows R - m .. R - 1 on the columns of `mask`,
-// expanded along its first row, and its absolute-value tree over the sizes. In increasing order
-// of mask every minor's sub-minors (its mask less one column) come first. R and C are template
-// parameters so that the loops unroll and the row of each mask (R less its number of columns)
-// is a constant: the generic loops, which took every mask n times to pick those of each size
-// and counted their bits with a library call, took 5 500 instructions per 4 x 4 determinant.
+// expanded along its first row, and its absolute-value tree over the sizes (1 << C entries
+// each). In increasing order of mask every minor's sub-minors (its mask less one column) come
+// first. R and C are template parameters so that the loops unroll and the row of each mask (R
+// less its number of columns) is a constant: the generic loops, which took every mask n times to
+// pick those of each size and counted their bits with a library call, took 5 500 instructions
+// per 4 x 4 determinant.
 template <int R, int C, bool kFma>
-void minors_of(const Entries& entry, const Sizes& size, DoubleDouble (&minor)[1 << C], double (&tree)[1 << C]) {
+void minors_of(const Entries& entry, const Sizes& size, DoubleDouble* minor, double* tree) {
 #pragma GCC unroll 64
   for (int mask = 1; mask < (1 << C); ++mask) {
     const int m = __builtin_popcount(static_cast<unsigned>(mask));
     if (m > R) continue;
     const int r = R - m;
     DoubleDouble value;
-    double t = 0.0;
-    int position = 0;
-#pragma GCC unroll 8
-    for (int c = 0; c < C; ++c) {
-      if (!(mask & (1 << c))) continue;
-      const int rest = mask & ~(1 << c);
-      if (rest == 0) {
-        value = entry[r][c];
-        t = size[r][c];
-        break;
-      }
-      const DoubleDouble term = multiply<kFma>(entry[r][c], minor[rest]);
-      value = add(value, position % 2 ? negate(term) : term);
-      t += size[r][c] * tree[rest];
-      ++position;
-    }
+    double t;
+    expand_along<C, kFma>(entry[r], size[r], mask, minor, tree, value, t);
     minor[mask] = value;
     tree[mask] = t;
   }
@@ -177,15 +190,53 @@ std::optional<int> orientation_as(const Frame& f, const double* const* points) {
   return certified(det, abs_tree, n, entry_roundings<false>(f));
 }
 
-// The cofactors of n rows whose first is left out, from the n - 1 others (`points`), lifted or
-// orientation's; false on under- or overflow.
-template <bool kFma, bool kLifted>
-bool cofactors_as(const Frame& f, const double* const* points, int n, DoubleDouble* cofactor, double* tree) {
+// The cofactors of orientation's n rows whose first is left out, from the n - 1 others
+// (`points`); false on under- or overflow.
+template <bool kFma>
+bool orientation_cofactors_as(const Frame& f, const double* const* points, int n, DoubleDouble* cofactor, double* tree) {
   const FloatingPointWatch watch;
   Entries entry;
   Sizes size;
-  for (int r = 0; r + 1 < n; ++r) row_of<kFma, kLifted>(f, points[r], entry[r], size[r]);
+  for (int r = 0; r + 1 < n; ++r) difference_row(f, points[r], entry[r], size[r]);
   with_rows(n, [&](auto rows) { cofactors_of<rows, kFma>(entry, size, cofactor, tree); });
+  return watch.clean();
+}
+
+// The facet's part of a candidate's lifted cofactors: the minors of the rows p_1 .. p_{n-2}
+// (`points`) on every column set of up to n - 2 columns (minors_of's, 1 << n entries each);
+// false on under- or overflow.
+template <bool kFma>
+bool facet_minors_as(const Frame& f, const double* const* points, int n, DoubleDouble* minor, double* tree) {
+  const FloatingPointWatch watch;
+  Entries entry;
+  Sizes size;
+  for (int r = 0; r + 2 < n; ++r) lifted_row<kFma>(f, points[r], entry[r], size[r]);
+  with_rows(n, [&](auto rows) { minors_of<rows - 2, rows, kFma>(entry, size, minor, tree); });
+  return watch.clean();
+}
+
+// The cofactors of [x; candidate; p_1; ...; p_{n-2}] along x's row from facet_minors_as's minors:
+// each expanded along the candidate's row, as minors_of expands its top level, so that they are
+// the bits cofactors_as gives on the rows [candidate; p_1; ...] (n products per cofactor instead
+// of all the levels: in 4D 20 double-double products instead of 70).
+template <bool kFma>
+bool candidate_cofactors_as(const Frame& f, const double* candidate, int n, const DoubleDouble* minor,
+                            const double* minor_tree, DoubleDouble* cofactor, double* tree) {
+  const FloatingPointWatch watch;
+  Row entry;
+  RowSizes size;
+  lifted_row<kFma>(f, candidate, entry, size);
+  with_rows(n, [&](auto rows) {
+    constexpr int kColumns = rows;
+#pragma GCC unroll 8
+    for (int c = 0; c < kColumns; ++c) {
+      DoubleDouble value;
+      double t;
+      expand_along<kColumns, kFma>(entry, size, ((1 << kColumns) - 1) & ~(1 << c), minor, minor_tree, value, t);
+      cofactor[c] = value;
+      tree[c] = t;
+    }
+  });
   return watch.clean();
 }
 
@@ -218,9 +269,16 @@ DRANGE_FMA_CODE std::optional<int> lifted_sign_fma(const Frame& f, const double*
 DRANGE_FMA_CODE std::optional<int> orientation_fma(const Frame& f, const double* const* points) {
   return orientation_as<true>(f, points);
 }
-template <bool kLifted>
-DRANGE_FMA_CODE bool cofactors_fma(const Frame& f, const double* const* points, int n, DoubleDouble* cofactor, double* tree) {
-  return cofactors_as<true, kLifted>(f, points, n, cofactor, tree);
+DRANGE_FMA_CODE bool facet_minors_fma(const Frame& f, const double* const* points, int n, DoubleDouble* minor, double* tree) {
+  return facet_minors_as<true>(f, points, n, minor, tree);
+}
+DRANGE_FMA_CODE bool candidate_cofactors_fma(const Frame& f, const double* candidate, int n, const DoubleDouble* minor,
+                                             const double* minor_tree, DoubleDouble* cofactor, double* tree) {
+  return candidate_cofactors_as<true>(f, candidate, n, minor, minor_tree, cofactor, tree);
+}
+DRANGE_FMA_CODE bool orientation_cofactors_fma(const Frame& f, const double* const* points, int n, DoubleDouble* cofactor,
+                                               double* tree) {
+  return orientation_cofactors_as<true>(f, points, n, cofactor, tree);
 }
 template <bool kLifted>
 DRANGE_FMA_CODE std::optional<int> sign_with_fma(const Frame& f, const double* x, int n, const DoubleDouble* cofactor,
@@ -252,16 +310,24 @@ std::optional<int> refined_orientation(const Frame& f, const double* const* poin
   return uses_fma ? orientation_fma(f, points) : orientation_as<false>(f, points);
 }
 
-template <bool kLifted>
-bool RefinedCofactors::prepare_as(const Frame& f, const double* const* points) {
-  return uses_fma ? cofactors_fma<kLifted>(f, points, n_, cofactor_, tree_)
-                  : cofactors_as<false, kLifted>(f, points, n_, cofactor_, tree_);
+void RefinedCofactors::prepare(const Frame& f, const double* const* points) {
+  prepare_facet(f, points);
+  prepare_candidate(f, points[f.k - 1]);
 }
 
-void RefinedCofactors::prepare(const Frame& f, const double* const* points) {
+void RefinedCofactors::prepare_facet(const Frame& f, const double* const* points) {
   n_ = f.k + 1;
   lifted_ = true;
-  usable_ = n_ <= kRefinedMaxRows && prepare_as<true>(f, points);
+  usable_ = false;
+  facet_usable_ = n_ <= kRefinedMaxRows &&
+                  (uses_fma ? facet_minors_fma(f, points, n_, facet_minor_, facet_tree_)
+                            : facet_minors_as<false>(f, points, n_, facet_minor_, facet_tree_));
+}
+
+void RefinedCofactors::prepare_candidate(const Frame& f, const double* candidate) {
+  usable_ = facet_usable_ &&
+            (uses_fma ? candidate_cofactors_fma(f, candidate, n_, facet_minor_, facet_tree_, cofactor_, tree_)
+                      : candidate_cofactors_as<false>(f, candidate, n_, facet_minor_, facet_tree_, cofactor_, tree_));
   if (!usable_) return;
   // Each cofactor is an (n - 1)-minor of rows whose entries carry f.dim roundings: certified's
   // bound for such a minor (the 1 + 2^-40 also covers this product's roundings).
@@ -273,13 +339,16 @@ void RefinedCofactors::prepare(const Frame& f, const double* const* points) {
 void RefinedCofactors::prepare_orientation(const Frame& f, const double* const* points) {
   n_ = f.k;
   lifted_ = false;
-  usable_ = n_ >= 2 && n_ <= kRefinedMaxRows && prepare_as<false>(f, points);
+  facet_usable_ = false;
+  usable_ = n_ >= 2 && n_ <= kRefinedMaxRows &&
+            (uses_fma ? orientation_cofactors_fma(f, points, n_, cofactor_, tree_)
+                      : orientation_cofactors_as<false>(f, points, n_, cofactor_, tree_));
 }
 
 bool RefinedCofactors::linear_form(double* coefficient, double* slack) const {
   if (!usable_ || !lifted_) return false;
-  // sign_with's expansion has x's row first: moving it last takes n - 1 transpositions.
-  const double last = n_ % 2 == 0 ? -1.0 : 1.0;
+  // sign_with's determinant, moved to the points' order (to_points_order: lifted, always -1).
+  const double last = -1.0;
   for (int c = 0; c < n_; ++c) {
     coefficient[c] = (c % 2 ? -last : last) * cofactor_[c].hi;
     slack[c] = std::fabs(cofactor_[c].lo) + error_[c];
@@ -317,8 +386,7 @@ std::optional<int> RefinedCofactors::quick_sign_with(const Frame& f, const doubl
   if (v > bound) s = 1;
   else if (v < -bound) s = -1;
   else return std::nullopt;
-  // x's row moved from last to first: n - 1 transpositions (as sign_with).
-  return n_ % 2 == 0 ? -s : s;
+  return to_points_order(s);
 }
 
 std::optional<int> RefinedCofactors::sign_with(const Frame& f, const double* x) const {
@@ -326,8 +394,7 @@ std::optional<int> RefinedCofactors::sign_with(const Frame& f, const double* x) 
   std::optional<int> s;
   if (lifted_) s = uses_fma ? sign_with_fma<true>(f, x, n_, cofactor_, tree_) : sign_with_as<false, true>(f, x, n_, cofactor_, tree_);
   else s = uses_fma ? sign_with_fma<false>(f, x, n_, cofactor_, tree_) : sign_with_as<false, false>(f, x, n_, cofactor_, tree_);
-  // x's row moved from last to first: n - 1 transpositions.
-  if (s && n_ % 2 == 0) return -*s;
+  if (s) return to_points_order(*s);
   return s;
 }
 
