@@ -6,6 +6,10 @@
 
 namespace drange {
 
+// The largest dimension drange triangulates (from 2): the exact predicates' tables of minors
+// reach d + 1 = 12 columns.
+inline constexpr int kMaxDimension = 11;
+
 // Points stored row-major: coordinate k of point i is coords[i * dim + k].
 struct PointCloud {
   int dim = 0;

@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "delaunay/known_ties.hpp"
+#include "drange/points.hpp"
 #include "delaunay/leaf_blocks.hpp"
 #include "geometry/error_bound.hpp"
 #include "geometry/minors.hpp"
@@ -28,8 +29,8 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 inline std::uint32_t bit(int j) { return std::uint32_t{1} << j; }
-// d <= 11 (prepare_points.cpp): rows of d + 1 entries, d + 2 ranks.
-constexpr int kMaxRow = 12;
+// Rows of d + 1 entries, d + 2 ranks.
+constexpr int kMaxRow = kMaxDimension + 1;
 
 // Two doubles as one value (GCC and Clang vector extensions: an SSE2 register on x86-64, a
 // NEON one on AArch64); a block's kLanes lanes are kPairs of them. Unaligned loads.

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "drange/errors.hpp"
+#include "drange/points.hpp"
 #include "geometry/error_bound.hpp"
 #include "util/for_ranges.hpp"
 #include "util/parallel_sort.hpp"
@@ -19,7 +20,6 @@ namespace drange::engine {
 namespace {
 using util::for_ranges;
 using util::sort_by_key;
-constexpr int kMaxDimension = 11;  // the filters' Laplace tables (geometry/minors.hpp) reach d+1 = 12 columns
 
 void check_input(PointsView input) {
   if (input.dim < 2 || input.dim > kMaxDimension)

@@ -7,6 +7,7 @@
 #include <limits>
 #include <numeric>
 
+#include "drange/points.hpp"
 #include "geometry/double_double.hpp"
 #include "geometry/error_bound.hpp"
 #include "spatial/kdtree.hpp"
@@ -27,8 +28,8 @@ struct Sphere {
   double radius2 = 0.0;
 };
 
-// The fit's unknowns: the centre and one more, up to 11 dimensions (prepare_points.cpp).
-constexpr int kMaxUnknowns = 12;
+// The fit's unknowns: the centre and one more.
+constexpr int kMaxUnknowns = kMaxDimension + 1;
 
 // Solves the m x m system a z = b (row-major, both overwritten) by Gaussian elimination with
 // partial pivoting; the solution is left in b. False when a pivot is zero or not finite.

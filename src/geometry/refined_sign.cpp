@@ -4,6 +4,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "drange/points.hpp"
 #include "geometry/double_double.hpp"
 #include "geometry/error_bound.hpp"
 
@@ -357,11 +358,10 @@ bool RefinedCofactors::linear_form(double* coefficient, double* slack) const {
 }
 
 std::optional<int> RefinedCofactors::quick_sign_with(const Frame& f, const double* x) const {
-  constexpr int kMaxDim = 11;  // prepare_points' limit
-  if (!usable_ || !lifted_ || f.dim > kMaxDim) return std::nullopt;
+  if (!usable_ || !lifted_ || f.dim > kMaxDimension) return std::nullopt;
   // x's row R in doubles: the differences carry one rounding, the lift dim + 1 (at most
   // eps = gamma(dim + 1) relative to the exact row r).
-  double delta[kMaxDim];
+  double delta[kMaxDimension];
   double lift = 0.0;
   for (int c = 0; c < f.dim; ++c) {
     delta[c] = x[c] - f.base[c];

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "drange/points.hpp"
+
 namespace drange::diagram {
 namespace {
 
@@ -94,7 +96,7 @@ bool exact_circumcentre(int dim, const double* const* vertices, double* centre) 
 
 double simplex_circumcentre(int dim, const double* const* vertices, double* centre) {
   // Row i: (v_i - v_0) . c' = |v_i - v_0|^2 / 2, with c = v_0 + c'.
-  Real a[kMaxDim * kMaxDim], b[kMaxDim], x[kMaxDim];
+  Real a[kMaxDimension * kMaxDimension], b[kMaxDimension], x[kMaxDimension];
   Real row_norms = 1;
   for (int i = 0; i < dim; ++i) {
     Real norm2 = 0;

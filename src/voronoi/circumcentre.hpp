@@ -9,9 +9,6 @@
 
 namespace drange::diagram {
 
-// The largest dimension the solvers accept (the engine's own limit).
-inline constexpr int kMaxDim = 11;
-
 // The circumcentre of a full-dimensional simplex (dim+1 vertices) written to `centre`.
 // Returns the Hadamard ratio  prod_i |v_i - v_0| / |det[v_1 - v_0, ..., v_d - v_0]|  (>= 1):
 // how close the simplex is to flat, which bounds how much the solve can amplify rounding.
