@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -344,6 +345,10 @@ TEST(PredicateTest, RoundedIntegerEvaluationsAreNotTakenForExact) {
       expect_predicates_agree(cloud_of(2, {0, 0, a, b, a + 1, b + 1, 1, 2}));
       expect_predicates_agree(cloud_of(3, {0, 0, 0, a, b, 0, a + 1, b + 1, 0, 0, 0, 1, 1, 2, 3}));
       expect_predicates_agree(cloud_of(3, {0, 0, 0, a, 0, b, 0, 1, 0, a + 1, 0, b + 1, 1, 2, 3}));
+      // In 4D and 5D (fixed_orientation): the same minor on two axes, unit steps on the others.
+      expect_predicates_agree(cloud_of(4, {0, 0, 0, 0, a, b, 0, 0, a + 1, b + 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 2, 3, 4}));
+      expect_predicates_agree(cloud_of(5, {0, 0, 0, 0, 0, 0, 0, 1, 0, 0, a, 0, 0, b, 0, 0, 0, 0, 0, 1, a + 1, 0, 0, b + 1, 0,
+                                           0, 1, 0, 0, 0, 1, 2, 3, 4, 5}));
       // The base at -(2^52 - a): every difference is 2^52 more than above, and some round.
       const double far = -(0x1p52 - a);
       expect_predicates_agree(cloud_of(2, {far, 0, a, b, a + 1, b + 1, 1, 2}));
@@ -351,6 +356,27 @@ TEST(PredicateTest, RoundedIntegerEvaluationsAreNotTakenForExact) {
     }
   }
   EXPECT_GT(decided_by_rounding, 0) << "some cases must round in double precision";
+}
+
+// The orientations of small integer points in 4D to 6D, flat ones included (the symbolic
+// perturbation asks them at every tie of an integer grid): the filter decides every one, by its
+// bound or by the proof that nothing rounded, and agrees with the reference.
+TEST(PredicateTest, IntegerOrientationsIn4DTo6DAreDecidedByTheFilter) {
+  int flat = 0;
+  for (int d = 4; d <= 6; ++d) {
+    for (std::uint64_t seed = 1; seed <= 300; ++seed) {
+      SCOPED_TRACE("d=" + std::to_string(d) + " seed=" + std::to_string(seed));
+      const PointCloud cloud = random_integer_points(static_cast<std::size_t>(d + 1), d, 0, 2, seed);
+      const std::vector<const double*> simplex = corners(cloud, first_ids(d + 1));
+      const Frame frame{d, d, nullptr, simplex[0]};
+      const std::optional<int> s = geometry::filtered_orientation(frame, simplex.data() + 1);
+      ASSERT_TRUE(s.has_value());
+      const int exact = reference_orientation(d, simplex);
+      EXPECT_EQ(*s, exact);
+      if (exact == 0) ++flat;
+    }
+  }
+  EXPECT_GT(flat, 100) << "most of these small simplices should be flat";
 }
 
 // Regression: both products of a 2x2 minor underflow to zero (1e-135 * 1e-190), and a later
