@@ -4,6 +4,7 @@
 // and the symbolic perturbation's two defining properties (never zero, antisymmetric).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <cstdint>
@@ -305,6 +306,47 @@ TEST(PredicateTest, PerturbedLiftedSignOnCubeCornersAndGrids) {
       expect_perturbation_properties(d, all, seed);
     }
   }
+}
+
+// lifted_tie_sign told the common sign of the orientations without the last point and without
+// the next to last (a facet search's candidate and tested point, both on the facet's open side)
+// gives what it computes without being told, whichever point is the most perturbed: cospherical
+// integer points (cube corners and a grid's cells) in 2D to 4D, every order of ranks tried.
+TEST(PredicateTest, TieSignWithTheOpenSideKnownAgrees) {
+  int told = 0;
+  for (int d = 2; d <= 4; ++d) {
+    std::vector<double> coords;
+    for (int i = 0; i < (1 << d); ++i)
+      for (int k = 0; k < d; ++k) coords.push_back(2.0 * ((i >> k) & 1) + k);  // a box of side 2
+    const PointCloud box = cloud_of(d, coords);
+    TestRandom random(static_cast<std::uint64_t>(d) * 101);
+    for (int trial = 0; trial < 60; ++trial) {
+      // d + 2 distinct corners (all on the box's sphere), in random order.
+      std::vector<std::int32_t> ids(static_cast<std::size_t>(1 << d));
+      for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<std::int32_t>(i);
+      for (std::size_t i = ids.size() - 1; i > 0; --i) std::swap(ids[i], ids[static_cast<std::size_t>(random.uniform() * static_cast<double>(i + 1))]);
+      ids.resize(static_cast<std::size_t>(d + 2));
+      const std::vector<const double*> all = corners(box, ids);
+      const Frame frame{d, d, nullptr, all[0]};
+      std::vector<const double*> without_last(all.begin() + 1, all.end() - 1);
+      std::vector<const double*> without_next(all.begin() + 1, all.end() - 2);
+      without_next.push_back(all.back());
+      const int a = geometry::orientation(frame, without_last.data()), b = geometry::orientation(frame, without_next.data());
+      if (a == 0 || a != b) continue;
+      std::vector<std::int64_t> ranks(static_cast<std::size_t>(d + 2));
+      for (int order = 0; order < 24; ++order) {
+        for (std::size_t i = 0; i < ranks.size(); ++i) ranks[i] = static_cast<std::int64_t>(i);
+        for (std::size_t i = ranks.size() - 1; i > 0; --i) std::swap(ranks[i], ranks[static_cast<std::size_t>(random.uniform() * static_cast<double>(i + 1))]);
+        SCOPED_TRACE("d=" + std::to_string(d) + " trial=" + std::to_string(trial) + " order=" + std::to_string(order));
+        const int computed = geometry::lifted_tie_sign(frame, all.data() + 1, ranks.data());
+        ASSERT_EQ(geometry::lifted_tie_sign(frame, all.data() + 1, ranks.data(), a), computed);
+        ASSERT_EQ(computed, geometry::lifted_sign_perturbed(frame, all.data() + 1, ranks.data()));
+        const std::int64_t top = *std::max_element(ranks.begin(), ranks.end());
+        if (ranks[static_cast<std::size_t>(d)] == top || ranks[static_cast<std::size_t>(d + 1)] == top) ++told;
+      }
+    }
+  }
+  EXPECT_GT(told, 200) << "the last two points should often be the most perturbed";
 }
 
 // The exactness proofs read exponents from the bits: against frexp on normal, subnormal and

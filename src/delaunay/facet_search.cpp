@@ -1007,7 +1007,7 @@ int SearchKernel<D>::exact_beats(std::int32_t id) {
     else s = geometry::small_integer_lifted_sign(frame, rows_.data());
     if (s) {
       note_outcome(tie_balance_, *s == 0);
-      return sigma_ * (*s != 0 ? *s : geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data()));
+      return sigma_ * (*s != 0 ? *s : geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data(), sigma_));
     }
   }
   // The double-double stage first: it decides the near-ties, which are most, and never a tie,
@@ -1036,7 +1036,7 @@ int SearchKernel<D>::exact_beats(std::int32_t id) {
     if (s != 0) return sigma_ * s;
     if (options_.remember_ties) sphere_ties_.record(simplex.data(), id);
   }
-  return sigma_ * geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data());
+  return sigma_ * geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data(), sigma_);
 }
 
 template <int D>
@@ -1060,7 +1060,7 @@ bool SearchKernel<D>::beats_candidate(std::int32_t id) {
     // I(p, x) has d + 2 units (d spatial columns, the lift twice). Exact and zero: a tie
     // (cospherical points, as in every cell of a grid), which only the perturbation breaks.
     if (candidate_exact_ && v_abs < exact_limits_[static_cast<std::size_t>(d + 2)])
-      s = v != 0.0 ? (v > 0 ? 1 : -1) : sigma_ * geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data());
+      s = v != 0.0 ? (v > 0 ? 1 : -1) : sigma_ * geometry::lifted_tie_sign(frame, rows_.data(), ranks_.data(), sigma_);
     else if (filters_hold_)  // the filter above was sound and failed: a near-tie, for the exact stages
       s = exact_beats(id);
     else

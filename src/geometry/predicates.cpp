@@ -318,7 +318,7 @@ std::optional<int> fixed_orientation(const Frame& f, const double* const* points
 // sign I(eps) = -(-1)^i (-1)^k sign(orientation of the others, based at the first of them).
 // The points are taken by decreasing rank without sorting, and the others live on the stack
 // up to kInlinePoints: grids reach this once per tie.
-int lifted_tie_sign(const Frame& f, const double* const* points, const std::int64_t* ranks) {
+int lifted_tie_sign(const Frame& f, const double* const* points, const std::int64_t* ranks, int known) {
   constexpr int kInlinePoints = 16;
   const int count = f.k + 2;
   std::array<const double*, kInlinePoints> inline_others;
@@ -335,6 +335,9 @@ int lifted_tie_sign(const Frame& f, const double* const* points, const std::int6
     for (int j = 0; j < count; ++j)
       if (ranks[j] < below && (i < 0 || ranks[j] > ranks[i])) i = j;
     below = ranks[i];
+    const int parity = ((i + f.k) & 1) ? -1 : 1;
+    // Points k and k + 1 (the last two) left out: the others' orientation is the caller's.
+    if (known != 0 && i >= f.k) return -parity * known;
     for (int j = 0, o = 0; j < count; ++j)
       if (j != i) others[o++] = point(j);
     Frame g = f;
@@ -344,10 +347,7 @@ int lifted_tie_sign(const Frame& f, const double* const* points, const std::int6
     std::optional<int> h = filtered_orientation(g, others + 1);
     if (!h) h = small_integer_orientation(g, others + 1);
     if (!h) h = exact_orientation(g, others + 1);
-    if (*h != 0) {
-      const int parity = ((i + f.k) & 1) ? -1 : 1;
-      return -parity * *h;
-    }
+    if (*h != 0) return -parity * *h;
   }
   // Only reachable when the k+2 points do not span the k-flat: a caller's bug.
   throw InternalError("lifted_sign_perturbed: the points do not span their flat");

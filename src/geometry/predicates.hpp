@@ -59,8 +59,12 @@ int lifted_sign(const Frame& frame, const double* const* points);
 // is perturbed more. Ranks must be distinct.
 int lifted_sign_perturbed(const Frame& frame, const double* const* points, const std::int64_t* ranks);
 // lifted_sign_perturbed for a caller that has proved the unperturbed determinant exactly zero
-// (facet_search.cpp does, on dyadic points): the perturbation alone decides.
-int lifted_tie_sign(const Frame& frame, const double* const* points, const std::int64_t* ranks);
+// (facet_search.cpp does, on dyadic points): the perturbation alone decides. `known`, when not
+// 0, is the sign that the caller knows of both orientations of the base and the points without
+// the last one and without the next to last one (a facet search: its candidate and the tested
+// point are strictly on the facet's open side): when either of those two points is the most
+// perturbed, that sign decides, without an orientation.
+int lifted_tie_sign(const Frame& frame, const double* const* points, const std::int64_t* ranks, int known = 0);
 // lifted_sign_perturbed without the double filter, for a caller whose own filter of the same
 // determinant just failed: near-ties, which the generic filter would not decide either (2 000
 // points on a sphere: not once in 1.26M evaluations). The double-double and integer stages decide.
