@@ -479,7 +479,7 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
   // The lifted minors likewise, with the lift column counting twice (its entries are squares).
   orientation_exact_ = lifted_exact_ = points_.dyadic && filters_hold_;
   for (std::uint32_t mask = 1; (orientation_exact_ || lifted_exact_) && mask < bit(d + 1); ++mask) {
-    const int size = __builtin_popcount(mask);
+    const int size = geometry::bit_count(mask);
     if (size >= d) continue;  // the facet has d - 1 rows
     const bool lift = (mask & bit(d)) != 0;
     if (minors_.abs_minor(mask) < exact_limits_[static_cast<std::size_t>(size + lift)]) continue;

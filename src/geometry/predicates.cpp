@@ -59,7 +59,7 @@ bool evaluation_is_exact(const MinorTable& minors, int n, int lift_column, UnitO
   for (int columns = 0; columns <= n + 1; ++columns) limit[static_cast<std::size_t>(columns)] = power_of_two_limit(52 + unit * columns);
   for (std::uint32_t mask = 1; mask < (std::uint32_t{1} << n); ++mask) {
     const bool lift = lift_column >= 0 && (mask >> lift_column & 1u);
-    const int columns = __builtin_popcount(mask) + (lift ? 1 : 0);
+    const int columns = bit_count(mask) + (lift ? 1 : 0);
     if (!(minors.abs_minor(mask) < limit[static_cast<std::size_t>(columns)])) return false;
   }
   return true;
