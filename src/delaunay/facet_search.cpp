@@ -13,8 +13,8 @@
 #include <limits>
 
 #include "delaunay/known_ties.hpp"
-#include "drange/points.hpp"
 #include "delaunay/leaf_blocks.hpp"
+#include "drange/points.hpp"
 #include "geometry/error_bound.hpp"
 #include "geometry/minors.hpp"
 #include "geometry/predicates.hpp"

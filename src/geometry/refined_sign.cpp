@@ -41,7 +41,7 @@ void lifted_row(const Frame& f, const double* p, Row& entry, RowSizes& size) {
 // The minor of the rows R - m .. R - 1 (m the bits of `mask`) on the columns of `mask`, expanded
 // along its first row `entry` over the minors of the rows below it (`minor`, by column set),
 // and its absolute-value tree over the sizes. The one expansion that minors_of and
-// candidate_cofactors share, so that both give the same bits.
+// candidate_cofactors_as share, so that both give the same bits.
 template <int C, bool kFma>
 inline void expand_along(const DoubleDouble* entry, const double* size, int mask, const DoubleDouble* minor,
                          const double* tree, DoubleDouble& value, double& t) {
@@ -218,8 +218,8 @@ bool facet_minors_as(const Frame& f, const double* const* points, int n, DoubleD
 
 // The cofactors of [x; candidate; p_1; ...; p_{n-2}] along x's row from facet_minors_as's minors:
 // each expanded along the candidate's row, as minors_of expands its top level, so that they are
-// the bits cofactors_as gives on the rows [candidate; p_1; ...] (n products per cofactor instead
-// of all the levels: in 4D 20 double-double products instead of 70).
+// the bits cofactors_of gives on the lifted rows [candidate; p_1; ...] (n products per cofactor
+// instead of all the levels: in 4D 20 double-double products instead of 70).
 template <bool kFma>
 bool candidate_cofactors_as(const Frame& f, const double* candidate, int n, const DoubleDouble* minor,
                             const double* minor_tree, DoubleDouble* cofactor, double* tree) {
@@ -348,10 +348,9 @@ void RefinedCofactors::prepare_orientation(const Frame& f, const double* const* 
 
 bool RefinedCofactors::linear_form(double* coefficient, double* slack) const {
   if (!usable_ || !lifted_) return false;
-  // sign_with's determinant, moved to the points' order (to_points_order: lifted, always -1).
-  const double last = -1.0;
+  // The points' order negates sign_with's expansion (to_points_order), whose terms alternate.
   for (int c = 0; c < n_; ++c) {
-    coefficient[c] = (c % 2 ? -last : last) * cofactor_[c].hi;
+    coefficient[c] = (c % 2 ? 1.0 : -1.0) * cofactor_[c].hi;
     slack[c] = std::fabs(cofactor_[c].lo) + error_[c];
   }
   return true;
