@@ -400,12 +400,12 @@ TEST(PredicateTest, RoundedIntegerEvaluationsAreNotTakenForExact) {
   EXPECT_GT(decided_by_rounding, 0) << "some cases must round in double precision";
 }
 
-// The orientations of small integer points in 4D to 6D, flat ones included (the symbolic
+// The orientations of small integer points in 4D to 7D, flat ones included (the symbolic
 // perturbation asks them at every tie of an integer grid): the filter decides every one, by its
 // bound or by the proof that nothing rounded, and agrees with the reference.
-TEST(PredicateTest, IntegerOrientationsIn4DTo6DAreDecidedByTheFilter) {
+TEST(PredicateTest, IntegerOrientationsIn4DTo7DAreDecidedByTheFilter) {
   int flat = 0;
-  for (int d = 4; d <= 6; ++d) {
+  for (int d = 4; d <= 7; ++d) {
     for (std::uint64_t seed = 1; seed <= 300; ++seed) {
       SCOPED_TRACE("d=" + std::to_string(d) + " seed=" + std::to_string(seed));
       const PointCloud cloud = random_integer_points(static_cast<std::size_t>(d + 1), d, 0, 2, seed);

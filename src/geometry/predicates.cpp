@@ -257,14 +257,15 @@ std::optional<int> small_orientation(const Frame& f, const double* const* points
   return std::nullopt;
 }
 
-// Orientation for k = 4 to 6, the Laplace expansion laid out at compile time (every minor
+// Orientation for k = 4 to 7, the Laplace expansion laid out at compile time (every minor
 // of the last m rows by column set, each along its first row, as refined_sign.cpp's minors_of
 // in double-double), with filtered_sign's bound and evaluation_is_exact's proof (every minor's
 // absolute tree below 2^52 of its unit). The generic filter's table of minors, with its
 // run-time loops, took a third of the time of a 4D integer grid's triangulation and half of a
 // 6D one's (the symbolic perturbation's orientations, several per tie). Callgrind, whole runs,
-// same output: integer grids 4D (10^4 points) -21%, 5D (5^5) -23%, 6D (3^6) -34%; grids of 0.1 k
-// 4D -8%, 5D -5%; uniform points level.
+// same output: integer grids 4D (10^4 points) -21%, 5D (5^5) -23%, 6D (3^6) -34%, 7D (760
+// points of 3^7) -37%; grids of 0.1 k 4D -8%, 5D -5%; uniform points level. The mask loop must
+// unroll in full (127 masks for k = 7), so that each mask's size and columns are constants.
 template <int K>
 std::optional<int> fixed_orientation(const Frame& f, const double* const* points) {
   const FloatingPointWatch watch;
@@ -273,9 +274,9 @@ std::optional<int> fixed_orientation(const Frame& f, const double* const* points
     for (int c = 0; c < K; ++c) entry[r][c] = points[r][f.axis(c)] - f.base[f.axis(c)];
   double minor[1 << K], tree[1 << K];
   double largest[K + 1] = {};  // the largest absolute tree by number of columns
-#pragma GCC unroll 64
+#pragma GCC unroll 128
   for (int mask = 1; mask < (1 << K); ++mask) {
-    const int m = __builtin_popcount(static_cast<unsigned>(mask));
+    const int m = bit_count(static_cast<std::uint32_t>(mask));
     const int r = K - m;
     double value = 0.0, t = 0.0;
     int position = 0;
@@ -381,7 +382,8 @@ std::optional<int> filtered_orientation(const Frame& f, const double* const* poi
   switch (f.k) {
     case 4: return fixed_orientation<4>(f, points);
     case 5: return fixed_orientation<5>(f, points);
-    case 6: return fixed_orientation<6>(f, points);  // from 7 the mask loop (127 masks) would not unroll
+    case 6: return fixed_orientation<6>(f, points);
+    case 7: return fixed_orientation<7>(f, points);
     default: break;
   }
   const auto unit = [&] { return common_unit_exponent(f.dim, f.base, points, f.k); };
