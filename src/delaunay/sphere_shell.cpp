@@ -167,6 +167,11 @@ constexpr std::size_t kMaxSpheres = 32;
 constexpr double kSphereShare = 0.01;
 constexpr std::size_t kSpherePoints = 64;
 constexpr double kMaxRadiusOverExtent = 16.0;
+// The most points inside the smallest of the spheres, relative to the points on it (see
+// spheres_in). Concentric spheres have none there, or a point at the centre; the 4D grid of
+// 6^4 points has 16 inside its smallest sphere of 64, that of 10^4 points 88 in 64 of its
+// sample, the 5D grid of 5^5 points 51 in 80.
+constexpr double kMostlyEmpty = 0.125;
 // The largest step between the squared distances of two points that centre_from_pairs takes
 // to lie on one sphere, relative to the median step.
 constexpr double kPairGap = 8.0;
@@ -201,6 +206,10 @@ std::vector<double> spheres_in(const Distances& t, std::size_t fewest = kSphereP
     std::size_t j = i + 1;
     while (j < t.size() && t[j].first <= limit) ++j;
     if (j - i >= least) {
+      // The smallest sphere's ball must be nearly empty (kMostlyEmpty): a grid's squared
+      // distances from its centre take few values too, in 4D and 5D each held by enough points,
+      // but the smallest such sphere holds the grid's middle, where the shell only costs.
+      if (radii2.empty() && static_cast<double>(i) > kMostlyEmpty * static_cast<double>(j - i)) return {};
       radii2.push_back(0.5 * (t[i].first + t[j - 1].first));
       covered += j - i;
     }
