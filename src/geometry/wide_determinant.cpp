@@ -2,6 +2,8 @@
 #include "geometry/wide_determinant.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <limits>
 #include <utility>
@@ -13,9 +15,11 @@
 namespace drange::geometry {
 namespace {
 
-constexpr int kCoordinateBits = 125;  // |coordinate| < 2^125 in the common unit: differences fit in 128 bits
-constexpr int kDifferenceBits = 62;   // |difference| < 2^62: the bounds of every formula below
-constexpr int kMaxColumns = 4;        // 4 x 4 orientations, 5 x 5 lifted determinants (4D)
+constexpr int kMaxColumns = 4;  // 4 x 4 orientations, 5 x 5 lifted determinants (4D)
+// The largest difference taken, in the common unit: below it, a difference's rounding to a
+// double and its error are each at most 2^62 - 2^10 and 2^8, so the difference is below 2^62,
+// the bound of every formula below.
+constexpr double kLargestDifference = 0x1p62 - 0x1p10;
 
 // The common unit of the coordinates that enter one determinant: the least exponent of their
 // lowest set bits. Every coordinate is then an integer multiple of 2^unit.
@@ -25,36 +29,34 @@ class CommonUnit {
     if (x != 0.0) unit_ = std::min(unit_, lowest_bit_exponent(x));
   }
   int unit() const { return unit_; }
-  void set_unit(int unit) { unit_ = unit; }
-  // x / 2^unit into `out`; false when it would not fit in kCoordinateBits.
-  bool scaled(double x, Int128& out) const {
-    if (x == 0.0) {
-      out = 0;
-      return true;
-    }
-    const DoubleParts p = parts_of(x);  // |significand| < 2^53
-    const int shift = p.exponent - unit_;
-    if (shift > kCoordinateBits - 53) return false;
-    // A negative shift drops only zero bits: the unit is at most x's lowest set bit.
-    const std::uint64_t significand = static_cast<std::uint64_t>(p.significand < 0 ? -p.significand : p.significand);
-    const Uint128 magnitude = shift >= 0 ? static_cast<Uint128>(significand) << shift : Uint128{significand >> -shift};
-    out = p.significand < 0 ? -static_cast<Int128>(magnitude) : static_cast<Int128>(magnitude);
-    return true;
+  // 2^-unit, or 0 where that is not a normal double (a unit below 2^-1023 or above 2^1022:
+  // the caller declines).
+  double inverse() const {
+    if (unit_ == std::numeric_limits<int>::max()) return 1.0;  // every coordinate 0
+    const int exponent = -unit_;
+    if (exponent < -1022 || exponent > 1023) return 0.0;
+    const std::uint64_t bits = static_cast<std::uint64_t>(exponent + 1023) << 52;
+    double out;
+    std::memcpy(&out, &bits, sizeof out);
+    return out;
   }
 
  private:
   int unit_ = std::numeric_limits<int>::max();
 };
 
-// x - base in the common unit (base already scaled), into `out`; false when x does not fit or
-// the difference is not below 2^kDifferenceBits.
-[[gnu::always_inline]] inline bool difference(const CommonUnit& unit, double x, Int128 base, std::int64_t& out) {
-  Int128 a;
-  if (!unit.scaled(x, a)) return false;
-  const Int128 d = a - base;
-  constexpr Int128 kLimit = Int128{1} << kDifferenceBits;
-  if (!(d < kLimit && d > -kLimit)) return false;
-  out = static_cast<std::int64_t>(d);
+// (x - base) / 2^unit into `out` (`inverse` = 2^-unit, nonzero; x and base multiples of
+// 2^unit); false when it is not below kLargestDifference. The difference is hi + lo exactly
+// (Knuth's two-sum), each a multiple of 2^unit (a rounding of one is a multiple of its ulp, at
+// least 2^unit), so each scales to an integer exactly: two conversions, where shifting each
+// coordinate's significand into 128 bits took several times the instructions.
+[[gnu::always_inline]] inline bool difference(double x, double base, double inverse, std::int64_t& out) {
+  const double hi = x - base;  // two-sum of x and -base
+  const double base_part = hi - x, x_part = hi - base_part;
+  const double lo = (x - x_part) - (base + base_part);
+  const double hi_units = hi * inverse;
+  if (!(std::fabs(hi_units) <= kLargestDifference)) return false;
+  out = static_cast<std::int64_t>(hi_units) + static_cast<std::int64_t>(lo * inverse);
   return true;
 }
 
@@ -65,13 +67,13 @@ Int128 minor2(std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d) { 
 
 // The rows of the lifted determinant: x[r] the spatial differences on the frame's axes, lift[r]
 // the squared distance over all dim axes, for rows [0, rows); false when one does not fit.
-bool lifted_rows(const Frame& f, const CommonUnit& unit, const Int128* base, const double* const* points, int rows,
+bool lifted_rows(const Frame& f, double inverse, const double* const* points, int rows,
                  std::int64_t (*x)[kMaxColumns], Int128* lift) {
   for (int r = 0; r < rows; ++r) {
     std::int64_t delta[kMaxColumns];
     lift[r] = 0;
     for (int c = 0; c < f.dim; ++c) {
-      if (!difference(unit, points[r][c], base[c], delta[c])) return false;
+      if (!difference(points[r][c], f.base[c], inverse, delta[c])) return false;
       lift[r] += product(delta[c], delta[c]);
     }
     for (int c = 0; c < f.k; ++c) x[r][c] = delta[f.axis(c)];
@@ -125,13 +127,12 @@ std::optional<int> wide_orientation(const Frame& f, const double* const* points)
     unit.include(f.base[f.axis(c)]);
     for (int r = 0; r < k; ++r) unit.include(points[r][f.axis(c)]);
   }
+  const double inverse = unit.inverse();
+  if (inverse == 0.0) return std::nullopt;
   std::int64_t a[kMaxColumns][kMaxColumns];
-  for (int c = 0; c < k; ++c) {
-    Int128 base;
-    if (!unit.scaled(f.base[f.axis(c)], base)) return std::nullopt;
+  for (int c = 0; c < k; ++c)
     for (int r = 0; r < k; ++r)
-      if (!difference(unit, points[r][f.axis(c)], base, a[r][c])) return std::nullopt;
-  }
+      if (!difference(points[r][f.axis(c)], f.base[f.axis(c)], inverse, a[r][c])) return std::nullopt;
   if (k == 1) return (a[0][0] > 0) - (a[0][0] < 0);
   if (k == 2) {
     const Int128 det = minor2(a[0][0], a[0][1], a[1][0], a[1][1]);
@@ -154,12 +155,11 @@ std::optional<int> wide_lifted_sign(const Frame& f, const double* const* points)
     for (int r = 0; r < n; ++r) unit.include(points[r][c]);
   }
   // Rows [pi(p_r - base), |p_r - base|^2]: the lift below dim 2^124 <= 2^126.
-  Int128 base[kMaxColumns];
-  for (int c = 0; c < f.dim; ++c)
-    if (!unit.scaled(f.base[c], base[c])) return std::nullopt;
+  const double inverse = unit.inverse();
+  if (inverse == 0.0) return std::nullopt;
   std::int64_t x[kMaxColumns + 1][kMaxColumns];
   Int128 lift[kMaxColumns + 1];
-  if (!lifted_rows(f, unit, base, points, n, x, lift)) return std::nullopt;
+  if (!lifted_rows(f, inverse, points, n, x, lift)) return std::nullopt;
   if (k == 4) {
     // Along the lift column: det = sum_r (-1)^r L_r S_r, S_r the spatial 4 x 4 minor without
     // row r (below 2^253); each product below 2^379, the sum below 2^382.
@@ -205,11 +205,12 @@ bool WideLiftedCofactors::prepare_fixed(const Frame& f, const double* const* poi
     for (int r = 0; r < D; ++r) unit.include(points[r][c]);
   }
   unit_ = unit.unit();
-  for (int c = 0; c < D; ++c)
-    if (!unit.scaled(f.base[c], base_[c])) return false;
+  inverse_ = unit.inverse();
+  if (inverse_ == 0.0) return false;
+  for (int c = 0; c < D; ++c) base_[c] = f.base[c];
   std::int64_t x[kMaxColumns][kMaxColumns];
   Int128 lift[kMaxColumns];
-  if (!lifted_rows(f, unit, base_, points, D, x, lift)) return false;
+  if (!lifted_rows(f, inverse_, points, D, x, lift)) return false;
   if constexpr (D == 4) {
     prepare4(x, lift);
   } else {
@@ -268,11 +269,10 @@ std::optional<int> WideLiftedCofactors::sign_with_fixed(const double* point) con
   CommonUnit unit;
   for (int c = 0; c < D; ++c) unit.include(point[c]);
   if (unit.unit() < unit_) return std::nullopt;  // a lower set bit than the rows' unit
-  unit.set_unit(unit_);
   std::int64_t x[D];
   Int128 lift = 0;
   for (int c = 0; c < D; ++c) {
-    if (!difference(unit, point[c], base_[c], x[c])) return std::nullopt;
+    if (!difference(point[c], base_[c], inverse_, x[c])) return std::nullopt;
     lift += product(x[c], x[c]);
   }
   if constexpr (D == 4) {

@@ -9,7 +9,7 @@
 // the formula fixes: 64-bit differences, 128-bit 2 x 2 minors and lifts, 192 to 384 bits above
 // them (up to the 5 x 5 lifted determinant of 4D). That needs each difference from the base
 // point below 2^62 in the common unit (the points of a determinant are near each other: 0.01 k
-// near 5 differ by about 2^55 units of 0.01's last bit) and each coordinate below 2^125. The
+// near 5 differ by about 2^55 units of 0.01's last bit), and 2^-unit a normal double. The
 // signs are exact: tests/wide_determinant_test.cpp checks them against GMP's.
 #pragma once
 
@@ -50,7 +50,8 @@ class WideLiftedCofactors {
 
   int dim_ = 0;
   int unit_ = 0;
-  Int128 base_[4] = {};
+  double base_[4] = {};
+  double inverse_ = 1.0;  // 2^-unit_
   // The cofactors of x's spatial entries and of its lift, signs folded in: det = sum_c x_c
   // spatial_[c] + |x - base|^2 lift_. In 3D below 2^253 and 2^189, in 4D below 2^317 and 2^253.
   Wide<4> spatial3_[3] = {};
