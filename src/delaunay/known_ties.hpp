@@ -68,6 +68,13 @@ class KnownTies {
   mutable std::int32_t last_set_ = -1;
   std::size_t max_links_;
   std::vector<std::vector<std::int32_t>> sets_;  // each sorted
+  // Per set, a bit per member (signature_bit): a set whose signature lacks a point's bit does
+  // not hold it, so find() skips most of a point's sets without a binary search (a point of a
+  // 5D grid is in dozens of sets; find took 9% of a 4^5 grid of 0.1 k).
+  std::vector<std::uint64_t> signatures_;
+  static std::uint64_t signature_bit(std::int32_t id) {
+    return std::uint64_t{1} << ((static_cast<std::uint32_t>(id) * 0x9E3779B9u) >> 26);
+  }
   std::vector<std::int32_t> first_link_;         // per point, -1: in no set (empty until a record)
   std::vector<Link> links_;
 };
