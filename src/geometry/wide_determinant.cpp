@@ -15,7 +15,7 @@
 namespace drange::geometry {
 namespace {
 
-constexpr int kMaxColumns = 4;  // 4 x 4 orientations, 5 x 5 lifted determinants (4D)
+constexpr int kMaxColumns = WideLiftedCofactors::kMaxDim;  // 5 x 5 orientations, 6 x 6 lifted determinants (5D)
 // The largest difference taken, in the common unit: below it, a difference's rounding to a
 // double and its error are each at most 2^62 - 2^10 and 2^8, so the difference is below 2^62,
 // the bound of every formula below.
@@ -93,14 +93,20 @@ void pair_minors3(const std::int64_t (*x)[kMaxColumns], Wide<2> (&m)[3][3]) {
   }
 }
 
-// The index of the pair a < b of 0 .. 3: (0,1) 0, (0,2) 1, (0,3) 2, (1,2) 3, (1,3) 4, (2,3) 5.
-constexpr int pair_index(int a, int b) { return a == 0 ? b - 1 : a + b; }
+// The index of the pair a < b of 0 .. n - 1, pairs in lexicographic order: for n = 4, (0,1) 0,
+// (0,2) 1, (0,3) 2, (1,2) 3, (1,3) 4, (2,3) 5.
+constexpr int pair_index(int a, int b, int n = 4) { return a * (2 * n - a - 1) / 2 + (b - a - 1); }
 
-// The six 2 x 2 minors of rows r, s of x on the column pairs, by pair_index.
-void pair_minors4(const std::int64_t (*x)[kMaxColumns], int r, int s, Wide<2> (&m)[6]) {
-  for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b) m[pair_index(a, b)] = Wide<2>::from(minor2(x[r][a], x[r][b], x[s][a], x[s][b]));
+// The 2 x 2 minors of rows r, s of x on the pairs of the first N columns, by pair_index.
+template <int N>
+void pair_minors(const std::int64_t (*x)[kMaxColumns], int r, int s, Wide<2> (&m)[N * (N - 1) / 2]) {
+  #pragma GCC unroll 10
+  for (int a = 0; a < N; ++a)
+    #pragma GCC unroll 10
+    for (int b = a + 1; b < N; ++b) m[pair_index(a, b, N)] = Wide<2>::from(minor2(x[r][a], x[r][b], x[s][a], x[s][b]));
 }
+
+void pair_minors4(const std::int64_t (*x)[kMaxColumns], int r, int s, Wide<2> (&m)[6]) { pair_minors<4>(x, r, s, m); }
 
 // A 4 x 4 determinant by Laplace along its first two rows, from their 2 x 2 minors (top) and
 // the last two rows' (bottom): the sum over column pairs a < b of (-1)^(a + b + 1) top(a, b)
@@ -115,6 +121,51 @@ Wide<4> spatial4(const std::int64_t (*x)[kMaxColumns], int r0, int r1, int r2, i
   pair_minors4(x, r0, r1, top);
   pair_minors4(x, r2, r3, bottom);
   return laplace4(top, bottom);
+}
+
+// The 3 x 3 minor of row `row` over a row pair whose 2 x 2 minors on 5 columns are `m`, on
+// the columns other than a < b, along `row`: below 3 2^187 < 2^189.
+Wide<3> triple5(const std::int64_t* row, const Wide<2> (&m)[10], int a, int b) {
+  int c[3], n = 0;
+  #pragma GCC unroll 10
+  for (int k = 0; k < 5; ++k)
+    if (k != a && k != b) c[n++] = k;
+  return Wide<1>::from(row[c[0]]) * m[pair_index(c[1], c[2], 5)] - Wide<1>::from(row[c[1]]) * m[pair_index(c[0], c[2], 5)] +
+         Wide<1>::from(row[c[2]]) * m[pair_index(c[0], c[1], 5)];
+}
+
+// A 5 x 5 determinant by Laplace along its first two rows: the sum over column pairs a < b of
+// (-1)^(a + b + 1) top(a, b) bottom(the other three), from the first two rows' 2 x 2 minors
+// (top) and the last three rows' 3 x 3 minors by the pair they leave out (bottom). Each
+// product below 2^125 2^189, the ten below 2^318.
+Wide<5> laplace5(const Wide<2> (&top)[10], const Wide<3> (&bottom)[10]) {
+  Wide<5> det = Wide<5>::from(0);
+  #pragma GCC unroll 10
+  for (int a = 0; a < 5; ++a)
+    #pragma GCC unroll 10
+    for (int b = a + 1; b < 5; ++b) {
+      const Wide<5> term = top[pair_index(a, b, 5)] * bottom[pair_index(a, b, 5)];
+      det = ((a + b) & 1) ? det + term : det - term;
+    }
+  return det;
+}
+
+// The 3 x 3 minors of rows 2, 3, 4 of x over 5 columns, by the pair of columns they leave out.
+void bottom_triples5(const std::int64_t (*x)[kMaxColumns], const Wide<2> (&rows34)[10], Wide<3> (&bottom)[10]) {
+  #pragma GCC unroll 10
+  for (int a = 0; a < 5; ++a)
+    #pragma GCC unroll 10
+    for (int b = a + 1; b < 5; ++b) bottom[pair_index(a, b, 5)] = triple5(x[2], rows34, a, b);
+}
+
+// The 5 x 5 spatial determinant of rows 0 .. 4 of x.
+Wide<5> spatial5(const std::int64_t (*x)[kMaxColumns]) {
+  Wide<2> top[10], rows34[10];
+  Wide<3> bottom[10];
+  pair_minors<5>(x, 0, 1, top);
+  pair_minors<5>(x, 3, 4, rows34);
+  bottom_triples5(x, rows34, bottom);
+  return laplace5(top, bottom);
 }
 
 }  // namespace
@@ -139,6 +190,7 @@ std::optional<int> wide_orientation(const Frame& f, const double* const* points)
     return (det > 0) - (det < 0);
   }
   if (k == 4) return spatial4(a, 0, 1, 2, 3).sign();
+  if (k == 5) return spatial5(a).sign();
   // Along the last row: each term below 2^187, the sum below 2^189.
   const Wide<3> det = Wide<1>::from(a[2][0]) * Wide<2>::from(minor2(a[0][1], a[0][2], a[1][1], a[1][2])) -
                       Wide<1>::from(a[2][1]) * Wide<2>::from(minor2(a[0][0], a[0][2], a[1][0], a[1][2])) +
@@ -149,6 +201,12 @@ std::optional<int> wide_orientation(const Frame& f, const double* const* points)
 std::optional<int> wide_lifted_sign(const Frame& f, const double* const* points) {
   const int k = f.k, n = k + 1;
   if (k < 2 || k > kMaxColumns || f.dim > kMaxColumns) return std::nullopt;
+  if (k == 5) {
+    // 5D: the cofactors along the last row, then its dot product with them.
+    WideLiftedCofactors cofactors;
+    if (!cofactors.prepare(f, points)) return std::nullopt;
+    return cofactors.sign_with(points[5]);
+  }
   CommonUnit unit;
   for (int c = 0; c < f.dim; ++c) {
     unit.include(f.base[c]);
@@ -194,6 +252,7 @@ bool WideLiftedCofactors::prepare(const Frame& f, const double* const* points) {
   dim_ = f.dim;
   if (f.dim == 3) return prepare_fixed<3>(f, points);
   if (f.dim == 4) return prepare_fixed<4>(f, points);
+  if (f.dim == 5) return prepare_fixed<5>(f, points);
   return false;
 }
 
@@ -211,7 +270,9 @@ bool WideLiftedCofactors::prepare_fixed(const Frame& f, const double* const* poi
   std::int64_t x[kMaxColumns][kMaxColumns];
   Int128 lift[kMaxColumns];
   if (!lifted_rows(f, inverse_, points, D, x, lift)) return false;
-  if constexpr (D == 4) {
+  if constexpr (D == 5) {
+    prepare5(x, lift);
+  } else if constexpr (D == 4) {
     prepare4(x, lift);
   } else {
     // x's row is the fourth of four: cofactor signs -, +, -, + along it. The minor without
@@ -229,7 +290,7 @@ bool WideLiftedCofactors::prepare_fixed(const Frame& f, const double* const* poi
   return true;
 }
 
-void WideLiftedCofactors::prepare4(const std::int64_t (*x)[4], const Int128* lift) {
+void WideLiftedCofactors::prepare4(const std::int64_t (*x)[kMaxDim], const Int128* lift) {
   // x's row is the fifth of five: cofactor signs +, -, +, -, + along it. The minor without
   // spatial column c is the 4 x 4 determinant of rows 0 .. 3 over the columns i < j < k other
   // than c and the lift L, by Laplace along rows (0, 1) against rows (2, 3) (as laplace4):
@@ -260,8 +321,65 @@ void WideLiftedCofactors::prepare4(const std::int64_t (*x)[4], const Int128* lif
   lift4_ = laplace4(top, bottom);  // the spatial determinant of rows 0 .. 3
 }
 
+void WideLiftedCofactors::prepare5(const std::int64_t (*x)[kMaxDim], const Int128* lift) {
+  // x's row is the sixth of six: cofactor signs -, +, -, +, - along its spatial entries, + at
+  // its lift. The minor without spatial column c is the 5 x 5 determinant of rows 0 .. 4 over
+  // the spatial columns s_0 < .. < s_3 other than c and the lift L, by Laplace along rows
+  // (0, 1) (as laplace5) over the position pairs p < q of (s_0, .., s_3, L):
+  //   q < 4: top(s_p, s_q), a spatial 2 x 2 minor below 2^125, times the 3 x 3 minor of rows
+  //          2, 3, 4 over the other two spatial columns and L, along L: sum of 3 lifts (below
+  //          2^126.4, 5D) times spatial 2 x 2 minors, below 2^253;
+  //   q = 4: top(s_p, L) = x_0 L_1 - L_0 x_1, below 2^189.4, times the spatial 3 x 3 minor of
+  //          rows 2, 3, 4 over the other three, below 2^188.6.
+  // Each product below 2^378, the ten below 2^381.4.
+  Wide<2> top[10], rows34[10], rows24[10], rows23[10];
+  pair_minors<5>(x, 0, 1, top);
+  pair_minors<5>(x, 3, 4, rows34);
+  pair_minors<5>(x, 2, 4, rows24);
+  pair_minors<5>(x, 2, 3, rows23);
+  Wide<3> bottom[10];  // spatial 3 x 3 minors of rows 2, 3, 4, by the column pair left out
+  bottom_triples5(x, rows34, bottom);
+  Wide<4> bottom_lift[10];  // rows 2, 3, 4 over columns u < v and L, by (u, v)
+  #pragma GCC unroll 10
+  for (int i = 0; i < 10; ++i)
+    bottom_lift[i] = Wide<2>::from(lift[2]) * rows34[i] - Wide<2>::from(lift[3]) * rows24[i] + Wide<2>::from(lift[4]) * rows23[i];
+  Wide<3> top_lift[5];
+  #pragma GCC unroll 10
+  for (int a = 0; a < 5; ++a)
+    top_lift[a] = Wide<1>::from(x[0][a]) * Wide<2>::from(lift[1]) - Wide<1>::from(x[1][a]) * Wide<2>::from(lift[0]);
+  #pragma GCC unroll 10
+  for (int c = 0; c < 5; ++c) {
+    int col[4], n = 0;
+    #pragma GCC unroll 10
+    for (int k = 0; k < 5; ++k)
+      if (k != c) col[n++] = k;
+    Wide<6> minor = Wide<6>::from(0);
+    #pragma GCC unroll 10
+    for (int p = 0; p < 4; ++p) {
+      #pragma GCC unroll 10
+      for (int q = p + 1; q < 4; ++q) {
+        int other[2], m = 0;
+        #pragma GCC unroll 10
+        for (int t = 0; t < 4; ++t)
+          if (t != p && t != q) other[m++] = col[t];
+        const Wide<6> term = top[pair_index(col[p], col[q], 5)] * bottom_lift[pair_index(other[0], other[1], 5)];
+        minor = ((p + q) & 1) ? minor + term : minor - term;  // (-1)^(p + q + 1)
+      }
+      const int a = std::min(c, col[p]), b = std::max(c, col[p]);
+      const Wide<6> term = top_lift[col[p]] * bottom[pair_index(a, b, 5)];
+      minor = (p & 1) ? minor + term : minor - term;  // (-1)^(p + 4 + 1)
+    }
+    spatial5_[c] = (c & 1) ? minor : -minor;
+  }
+  lift5_ = laplace5(top, bottom);  // the spatial determinant of rows 0 .. 4
+}
+
 std::optional<int> WideLiftedCofactors::sign_with(const double* point) const {
-  return dim_ == 3 ? sign_with_fixed<3>(point) : sign_with_fixed<4>(point);
+  switch (dim_) {
+    case 3: return sign_with_fixed<3>(point);
+    case 4: return sign_with_fixed<4>(point);
+    default: return sign_with_fixed<5>(point);
+  }
 }
 
 template <int D>
@@ -275,7 +393,13 @@ std::optional<int> WideLiftedCofactors::sign_with_fixed(const double* point) con
     if (!difference(point[c], base_[c], inverse_, x[c])) return std::nullopt;
     lift += product(x[c], x[c]);
   }
-  if constexpr (D == 4) {
+  if constexpr (D == 5) {
+    // Each product below 2^443.4 (the lift's) and 2^443.3 (the spatial ones'), the sum below
+    // 2^446.1: held in 512 bits, for a margin.
+    Wide<8> det = widen<8>(Wide<2>::from(lift) * lift5_);
+    for (int c = 0; c < 5; ++c) det = det + widen<8>(Wide<1>::from(x[c]) * spatial5_[c]);
+    return det.sign();
+  } else if constexpr (D == 4) {
     // Each product below 2^379, the sum below 2^381.
     Wide<6> det = Wide<2>::from(lift) * lift4_;
     for (int c = 0; c < 4; ++c) det = det + Wide<1>::from(x[c]) * spatial4_[c];
