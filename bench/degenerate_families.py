@@ -1,17 +1,18 @@
 #!/usr/bin/python3
-"""bench/degenerate_families.py: writes the eighteenth to twenty-second rounds' probe inputs
-(bench/RESULTS.md, "The eighteenth round" to "The twenty-second round"): 20 000 points each
-(5 000 for two_spheres4) on curved sets that are not one input sphere, a terrain with a flat
-plateau, where the direct search is weak, and decimal grids and rounded points, whose ties
-need the exact stages, in Qhull's format, into a directory.
+"""bench/degenerate_families.py: writes the eighteenth to twenty-fifth rounds' probe inputs
+(bench/RESULTS.md, "The eighteenth round" to "The twenty-fifth round"): 20 000 points each
+(5 000 for two_spheres4, 10 000 and 3 125 for the 4D and 5D decimal grids) on curved sets
+that are not one input sphere, a terrain with a flat plateau, where the direct search is
+weak, and decimal grids and rounded points, whose ties need the exact stages, in Qhull's
+format, into a directory.
 
     bench/degenerate_families.py DIR
 
 `bench/run.sh --degenerate` writes them into bench/data/families and runs each against CGAL
 and Qhull (one table); by hand, per file: drange delaunay DIR/NAME.txt -o /dev/null --stats
---threads 1, and build-bench/bench/drange_bench_run --peer cgal3 (cgal2 in 2D, cgal-dd in 4D,
-qhull) --input DIR/NAME.txt. The points come from Python's random module with a fixed seed:
-the same files on every run.
+--threads 1, and build-bench/bench/drange_bench_run --peer cgal3 (cgal2 in 2D, cgal-dd in 4D
+and 5D, qhull) --input DIR/NAME.txt. The points come from Python's random module with a fixed
+seed: the same files on every run.
 """
 import math
 import os
@@ -87,6 +88,12 @@ def families(rng):
     while len(rounded) < N:
         rounded[tuple(round(rng.random() * 20) / 20 for _ in range(4))] = None
     yield "rounded4", [list(p) for p in rounded]
+    # The twenty-fifth round's decimal grids in 4D and 5D, whose ties took the fixed-width stage
+    # (4D) or GMP (5D): 10^4 and 5^5 points of 0.1 k.
+    yield "decimal_grid4", [[0.1 * i, 0.1 * j, 0.1 * k, 0.1 * m] for i in range(10) for j in range(10)
+                            for k in range(10) for m in range(10)]
+    yield "decimal_grid5", [[0.1 * i, 0.1 * j, 0.1 * k, 0.1 * m, 0.1 * q] for i in range(5) for j in range(5)
+                            for k in range(5) for m in range(5) for q in range(5)]
 
 
 def main():
