@@ -999,7 +999,7 @@ int SearchKernel<D>::exact_beats(std::int32_t id) {
   // cylindrical grid).
   if (tie_balance_ > 0) {
     if (!wide_ready_) {
-      wide_usable_ = wide_.prepare(frame, rows_.data());  // 3D to 5D (wide_determinant.hpp)
+      wide_usable_ = wide_.prepare(frame, rows_.data());  // 3D to 6D (wide_determinant.hpp)
       wide_ready_ = true;
     }
     std::optional<int> s = wide_usable_ ? wide_.sign_with(points_.point(id)) : std::nullopt;

@@ -10,12 +10,13 @@
 
 #include "geometry/double_bits.hpp"
 #include "geometry/error_bound.hpp"
+#include "geometry/minors.hpp"
 #include "geometry/wide_integer.hpp"
 
 namespace drange::geometry {
 namespace {
 
-constexpr int kMaxColumns = WideLiftedCofactors::kMaxDim;  // 5 x 5 orientations, 6 x 6 lifted determinants (5D)
+constexpr int kMaxColumns = WideLiftedCofactors::kMaxDim;  // 6 x 6 orientations, 7 x 7 lifted determinants (6D)
 // The largest difference taken, in the common unit: below it, a difference's rounding to a
 // double and its error are each at most 2^62 - 2^10 and 2^8, so the difference is below 2^62,
 // the bound of every formula below.
@@ -168,6 +169,77 @@ Wide<5> spatial5(const std::int64_t (*x)[kMaxColumns]) {
   return laplace5(top, bottom);
 }
 
+// From 6D, minors by a table over column sets instead of hand-written expansions: the m x m
+// minors of the last m of R rows, for every set of m of the C columns, each along its first
+// row from the (m - 1) x (m - 1) minors below it (Laplace), for m = 1 .. R. 6D's 7 x 7 lifted
+// cofactors take 441 products this way.
+//
+// The limbs of an m x m minor: m! terms of m entries, each below 2^62 but for one lift (below
+// 2^126.6 in 6D) where the columns include the lift, plus a sign bit.
+constexpr int minor_limbs(int m, bool lifted) {
+  int factorial = 1, log = 0;
+  for (int i = 2; i <= m; ++i) factorial *= i;
+  while ((1 << log) < factorial) ++log;
+  return (62 * m + (lifted ? 65 : 0) + log + 1 + 63) / 64;
+}
+
+template <int M, int C, bool Lifted>
+using MinorLevel = Wide<minor_limbs(M, Lifted)>[1 << C];
+
+constexpr int binomial(int n, int k) { return k == 0 ? 1 : binomial(n - 1, k - 1) * n / k; }
+
+// The sets of M of C columns, as bit masks, laid out at compile time (__builtin_popcount is a
+// libgcc call on plain x86-64: counting at run time took 19% of a 6D grid of 0.1 k).
+template <int M, int C>
+struct ColumnSets {
+  unsigned mask[binomial(C, M)];
+  constexpr ColumnSets() : mask() {
+    int n = 0;
+    for (unsigned m = 0; m < (1u << C); ++m)
+      if (bit_count(m) == M) mask[n++] = m;
+  }
+};
+
+// Level M (rows R - M .. R - 1) from level M - 1, along row `row`, whose entry in the last
+// column is `lift` where Lifted.
+template <int M, int C, bool Lifted>
+void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<M - 1, C, Lifted>& below, MinorLevel<M, C, Lifted>& out) {
+  constexpr int L = minor_limbs(M, Lifted);
+  static constexpr ColumnSets<M, C> kSets;
+  for (const unsigned mask : kSets.mask) {
+    Wide<L> sum = Wide<L>::from(0);
+    int position = 0;
+#pragma GCC unroll 8
+    for (int j = 0; j < C; ++j) {
+      if ((mask & (1u << j)) == 0) continue;
+      const auto& minor = below[mask & ~(1u << j)];
+      const Wide<L> term = Lifted && j == C - 1 ? resize<L>(Wide<2>::from(lift) * minor) : resize<L>(Wide<1>::from(row[j]) * minor);
+      sum = (position & 1) ? sum - term : sum + term;
+      ++position;
+    }
+    out[mask] = sum;
+  }
+}
+
+// The 6 x 6 minors of rows 0 .. 5 of x (and of their lifts as column C - 1 where Lifted) over
+// the column sets of size 6: level 6 of the table, into `out`.
+template <int C, bool Lifted>
+void top_minors6(const std::int64_t (*x)[kMaxColumns], const Int128* lift, MinorLevel<6, C, Lifted>& out) {
+  constexpr int R = 6;
+  const auto lift_of = [&](int r) { return Lifted ? lift[r] : Int128{0}; };
+  MinorLevel<1, C, Lifted> one;
+  for (int j = 0; j < C; ++j) one[1u << j] = resize<minor_limbs(1, Lifted)>(Lifted && j == C - 1 ? Wide<2>::from(lift_of(R - 1)) : Wide<2>::from(x[R - 1][j]));
+  MinorLevel<2, C, Lifted> two;
+  MinorLevel<3, C, Lifted> three;
+  MinorLevel<4, C, Lifted> four;
+  MinorLevel<5, C, Lifted> five;
+  next_minors<2, C, Lifted>(x[R - 2], lift_of(R - 2), one, two);
+  next_minors<3, C, Lifted>(x[R - 3], lift_of(R - 3), two, three);
+  next_minors<4, C, Lifted>(x[R - 4], lift_of(R - 4), three, four);
+  next_minors<5, C, Lifted>(x[R - 5], lift_of(R - 5), four, five);
+  next_minors<6, C, Lifted>(x[R - 6], lift_of(R - 6), five, out);
+}
+
 }  // namespace
 
 std::optional<int> wide_orientation(const Frame& f, const double* const* points) {
@@ -191,6 +263,11 @@ std::optional<int> wide_orientation(const Frame& f, const double* const* points)
   }
   if (k == 4) return spatial4(a, 0, 1, 2, 3).sign();
   if (k == 5) return spatial5(a).sign();
+  if (k == 6) {
+    MinorLevel<6, 6, false> minors;
+    top_minors6<6, false>(a, nullptr, minors);
+    return minors[0x3f].sign();
+  }
   // Along the last row: each term below 2^187, the sum below 2^189.
   const Wide<3> det = Wide<1>::from(a[2][0]) * Wide<2>::from(minor2(a[0][1], a[0][2], a[1][1], a[1][2])) -
                       Wide<1>::from(a[2][1]) * Wide<2>::from(minor2(a[0][0], a[0][2], a[1][0], a[1][2])) +
@@ -201,11 +278,11 @@ std::optional<int> wide_orientation(const Frame& f, const double* const* points)
 std::optional<int> wide_lifted_sign(const Frame& f, const double* const* points) {
   const int k = f.k, n = k + 1;
   if (k < 2 || k > kMaxColumns || f.dim > kMaxColumns) return std::nullopt;
-  if (k == 5) {
-    // 5D: the cofactors along the last row, then its dot product with them.
+  if (k >= 5) {
+    // 5D and 6D: the cofactors along the last row, then its dot product with them.
     WideLiftedCofactors cofactors;
     if (!cofactors.prepare(f, points)) return std::nullopt;
-    return cofactors.sign_with(points[5]);
+    return cofactors.sign_with(points[k]);
   }
   CommonUnit unit;
   for (int c = 0; c < f.dim; ++c) {
@@ -253,6 +330,7 @@ bool WideLiftedCofactors::prepare(const Frame& f, const double* const* points) {
   if (f.dim == 3) return prepare_fixed<3>(f, points);
   if (f.dim == 4) return prepare_fixed<4>(f, points);
   if (f.dim == 5) return prepare_fixed<5>(f, points);
+  if (f.dim == 6) return prepare_fixed<6>(f, points);
   return false;
 }
 
@@ -270,7 +348,14 @@ bool WideLiftedCofactors::prepare_fixed(const Frame& f, const double* const* poi
   std::int64_t x[kMaxColumns][kMaxColumns];
   Int128 lift[kMaxColumns];
   if (!lifted_rows(f, inverse_, points, D, x, lift)) return false;
-  if constexpr (D == 5) {
+  if constexpr (D == 6) {
+    // x's row is the seventh of seven: cofactor signs +, -, +, -, +, - along its spatial
+    // entries, + at its lift (column 6).
+    MinorLevel<6, 7, true> minors;
+    top_minors6<7, true>(x, lift, minors);
+    for (int c = 0; c < 6; ++c) spatial6_[c] = (c & 1) ? -minors[0x7f & ~(1u << c)] : minors[0x7f & ~(1u << c)];
+    lift6_ = minors[0x3f];
+  } else if constexpr (D == 5) {
     prepare5(x, lift);
   } else if constexpr (D == 4) {
     prepare4(x, lift);
@@ -378,7 +463,8 @@ std::optional<int> WideLiftedCofactors::sign_with(const double* point) const {
   switch (dim_) {
     case 3: return sign_with_fixed<3>(point);
     case 4: return sign_with_fixed<4>(point);
-    default: return sign_with_fixed<5>(point);
+    case 5: return sign_with_fixed<5>(point);
+    default: return sign_with_fixed<6>(point);
   }
 }
 
@@ -393,7 +479,13 @@ std::optional<int> WideLiftedCofactors::sign_with_fixed(const double* point) con
     if (!difference(point[c], base_[c], inverse_, x[c])) return std::nullopt;
     lift += product(x[c], x[c]);
   }
-  if constexpr (D == 5) {
+  if constexpr (D == 6) {
+    // The 7 x 7 determinant: 7! terms of six differences and a lift, below 2^510.9; held in
+    // 576 bits, for a margin.
+    Wide<9> det = resize<9>(Wide<2>::from(lift) * lift6_);
+    for (int c = 0; c < 6; ++c) det = det + resize<9>(Wide<1>::from(x[c]) * spatial6_[c]);
+    return det.sign();
+  } else if constexpr (D == 5) {
     // Each product below 2^443.4 (the lift's) and 2^443.3 (the spatial ones'), the sum below
     // 2^446.1: held in 512 bits, for a margin.
     Wide<8> det = widen<8>(Wide<2>::from(lift) * lift5_);

@@ -6,8 +6,9 @@
 // then costs several thousand instructions per determinant, mostly in calls, sizes and
 // Bareiss' exact divisions. Here the same exact value (every coordinate an integer in the
 // points' common unit, as in exact_matrix.hpp) is expanded by minors in integers whose widths
-// the formula fixes: 64-bit differences, 128-bit 2 x 2 minors and lifts, 192 to 512 bits above
-// them (up to the 6 x 6 lifted determinant of 5D). That needs each difference from the base
+// the formula fixes: 64-bit differences, 128-bit 2 x 2 minors and lifts, 192 to 576 bits above
+// them (up to the 7 x 7 lifted determinant of 6D; from 6D the minors come from a table over
+// column sets, up to 5D from expansions written out). That needs each difference from the base
 // point below 2^62 in the common unit (the points of a determinant are near each other: 0.01 k
 // near 5 differ by about 2^55 units of 0.01's last bit), and 2^-unit a normal double. The
 // signs are exact: tests/wide_determinant_test.cpp checks them against GMP's.
@@ -20,22 +21,22 @@
 
 namespace drange::geometry {
 
-// The sign of orientation's determinant (predicates.hpp) for k <= 5, exactly; nullopt when a
-// difference is too large in the common unit (or k > 5).
+// The sign of orientation's determinant (predicates.hpp) for k <= 6, exactly; nullopt when a
+// difference is too large in the common unit (or k > 6).
 std::optional<int> wide_orientation(const Frame& frame, const double* const* points);
-// The sign of lifted_sign's determinant, unperturbed, for k = 2 to 5 in at most 5 ambient
+// The sign of lifted_sign's determinant, unperturbed, for k = 2 to 6 in at most 6 ambient
 // dimensions, exactly; nullopt otherwise.
 std::optional<int> wide_lifted_sign(const Frame& frame, const double* const* points);
 
-// wide_lifted_sign in 3D to 5D for many last points x against the same first dim rows (a
+// wide_lifted_sign in 3D to 6D for many last points x against the same first dim rows (a
 // candidate's sphere, tested against each point that its filters leave): the cofactors along
 // x's row computed once, in the rows' common unit, then each x is a dot product. (In 2D the
 // whole 3 x 3 determinant costs less than the cofactors: measured, a 2D decimal grid +6%.)
 class WideLiftedCofactors {
  public:
-  static constexpr int kMaxDim = 5;
+  static constexpr int kMaxDim = 6;
   // The cofactors of the first dim of the dim + 1 rows that `points` will hold, frame.base
-  // included (frame.dim = frame.k = 3 to 5, all axes); false when they do not fit or in
+  // included (frame.dim = frame.k = 3 to 6, all axes); false when they do not fit or in
   // another frame.
   bool prepare(const Frame& frame, const double* const* points);
   // The sign with x as the last row, the same as wide_lifted_sign's; nullopt when x needs a
@@ -60,9 +61,11 @@ class WideLiftedCofactors {
   Wide<3> lift3_ = {};
   Wide<5> spatial4_[4] = {};
   Wide<4> lift4_ = {};
-  // In 5D below 2^382 and 2^318.
+  // In 5D below 2^382 and 2^318; in 6D below 2^446.1 and 2^381.5.
   Wide<6> spatial5_[5] = {};
   Wide<5> lift5_ = {};
+  Wide<7> spatial6_[6] = {};
+  Wide<7> lift6_ = {};
 };
 
 }  // namespace drange::geometry

@@ -127,6 +127,14 @@ DRANGE_WIDE_INLINE Wide<M> widen(const Wide<N>& a) {
   return out;
 }
 
+// a in M limbs: sign-extended, or its low M limbs where the value is known to fit in them.
+template <int M, int N>
+DRANGE_WIDE_INLINE Wide<M> resize(const Wide<N>& a) {
+  Wide<M> out;
+  for (int i = 0; i < M; ++i) out.limb[i] = i < N ? a.limb[i] : (a.negative() ? ~std::uint64_t{0} : 0);
+  return out;
+}
+
 #undef DRANGE_WIDE_INLINE
 
 }  // namespace drange::geometry
