@@ -170,8 +170,8 @@ Wide<5> spatial5(const std::int64_t (*x)[kMaxColumns]) {
 }
 
 // The 6 x 6 spatial determinant of rows 0 .. 5 of x, by Laplace along rows (0, 1), and each
-// 4 x 4 minor of rows 2 .. 5 along rows (2, 3) (as laplace4): 105 products, where the table
-// below takes 192. 2 x 2 minors below 2^125, 4 x 4 ones below 2^252.6, the sum below 2^381.5.
+// 4 x 4 minor of rows 2 .. 5 along rows (2, 3) (as laplace4): 105 products, where a table as
+// below took 192 (and 9% more instructions on a 6D grid of 0.1 k). 2 x 2 minors below 2^125, 4 x 4 ones below 2^252.6, the sum below 2^381.5.
 Wide<6> spatial6(const std::int64_t (*x)[kMaxColumns]) {
   Wide<2> top[15], middle[15], bottom[15];
   pair_minors<6>(x, 0, 1, top);
@@ -196,51 +196,52 @@ Wide<6> spatial6(const std::int64_t (*x)[kMaxColumns]) {
   return det;
 }
 
-// From 6D, minors by a table over column sets instead of hand-written expansions: the m x m
-// minors of the last m of R rows, for every set of m of the C columns, each along its first
-// row from the (m - 1) x (m - 1) minors below it (Laplace), for m = 1 .. R. 6D's 7 x 7 lifted
-// cofactors take 441 products this way.
+// The 6D lifted cofactors from a table of minors over column sets: the m x m minors of the
+// last m of the 6 rows, for every set of m of the 7 columns (the lift last), each along its
+// first row from the (m - 1) x (m - 1) minors below it (Laplace), for m = 1 .. 6: 441
+// products, written once for any size instead of expansions written out.
 //
 // The limbs of an m x m minor: m! terms of m entries, each below 2^62 but for one lift (below
-// 2^126.6 in 6D) where the columns include the lift, plus a sign bit.
-constexpr int minor_limbs(int m, bool lifted) {
+// 2^126.6 in 6D), plus a sign bit.
+constexpr int minor_limbs(int m) {
   int factorial = 1, log = 0;
   for (int i = 2; i <= m; ++i) factorial *= i;
   while ((1 << log) < factorial) ++log;
-  return (62 * m + (lifted ? 65 : 0) + log + 1 + 63) / 64;
+  return (62 * m + 65 + log + 1 + 63) / 64;
 }
 
-template <int M, int C, bool Lifted>
-using MinorLevel = Wide<minor_limbs(M, Lifted)>[1 << C];
+constexpr int kTableColumns = 7;  // 6 spatial and the lift
+template <int M>
+using MinorLevel = Wide<minor_limbs(M)>[1 << kTableColumns];
 
 constexpr int binomial(int n, int k) { return k == 0 ? 1 : binomial(n - 1, k - 1) * n / k; }
 
-// The sets of M of C columns, as bit masks, laid out at compile time (__builtin_popcount is a
-// libgcc call on plain x86-64: counting at run time took 19% of a 6D grid of 0.1 k).
-template <int M, int C>
+// The sets of M columns, as bit masks, laid out at compile time (__builtin_popcount is a libgcc
+// call on plain x86-64: counting at run time took 19% of a 6D grid of 0.1 k).
+template <int M>
 struct ColumnSets {
-  unsigned mask[binomial(C, M)];
+  unsigned mask[binomial(kTableColumns, M)];
   constexpr ColumnSets() : mask() {
     int n = 0;
-    for (unsigned m = 0; m < (1u << C); ++m)
+    for (unsigned m = 0; m < (1u << kTableColumns); ++m)
       if (bit_count(m) == M) mask[n++] = m;
   }
 };
 
-// Level M (rows R - M .. R - 1) from level M - 1, along row `row`, whose entry in the last
-// column is `lift` where Lifted.
-template <int M, int C, bool Lifted>
-void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<M - 1, C, Lifted>& below, MinorLevel<M, C, Lifted>& out) {
-  constexpr int L = minor_limbs(M, Lifted);
-  static constexpr ColumnSets<M, C> kSets;
+// Level M (rows 6 - M .. 5) from level M - 1, along row `row`, whose lift is `lift`.
+template <int M>
+void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<M - 1>& below, MinorLevel<M>& out) {
+  constexpr int L = minor_limbs(M);
+  constexpr int kLift = kTableColumns - 1;
+  static constexpr ColumnSets<M> kSets;
   for (const unsigned mask : kSets.mask) {
     Wide<L> sum = Wide<L>::from(0);
     int position = 0;
 #pragma GCC unroll 8
-    for (int j = 0; j < C; ++j) {
+    for (int j = 0; j < kTableColumns; ++j) {
       if ((mask & (1u << j)) == 0) continue;
       const auto& minor = below[mask & ~(1u << j)];
-      const Wide<L> term = Lifted && j == C - 1 ? resize<L>(Wide<2>::from(lift) * minor) : resize<L>(Wide<1>::from(row[j]) * minor);
+      const Wide<L> term = j == kLift ? resize<L>(Wide<2>::from(lift) * minor) : resize<L>(Wide<1>::from(row[j]) * minor);
       sum = (position & 1) ? sum - term : sum + term;
       ++position;
     }
@@ -248,23 +249,19 @@ void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<M - 1, C
   }
 }
 
-// The 6 x 6 minors of rows 0 .. 5 of x (and of their lifts as column C - 1 where Lifted) over
-// the column sets of size 6: level 6 of the table, into `out`.
-template <int C, bool Lifted>
-void top_minors6(const std::int64_t (*x)[kMaxColumns], const Int128* lift, MinorLevel<6, C, Lifted>& out) {
-  constexpr int R = 6;
-  const auto lift_of = [&](int r) { return Lifted ? lift[r] : Int128{0}; };
-  MinorLevel<1, C, Lifted> one;
-  for (int j = 0; j < C; ++j) one[1u << j] = resize<minor_limbs(1, Lifted)>(Lifted && j == C - 1 ? Wide<2>::from(lift_of(R - 1)) : Wide<2>::from(x[R - 1][j]));
-  MinorLevel<2, C, Lifted> two;
-  MinorLevel<3, C, Lifted> three;
-  MinorLevel<4, C, Lifted> four;
-  MinorLevel<5, C, Lifted> five;
-  next_minors<2, C, Lifted>(x[R - 2], lift_of(R - 2), one, two);
-  next_minors<3, C, Lifted>(x[R - 3], lift_of(R - 3), two, three);
-  next_minors<4, C, Lifted>(x[R - 4], lift_of(R - 4), three, four);
-  next_minors<5, C, Lifted>(x[R - 5], lift_of(R - 5), four, five);
-  next_minors<6, C, Lifted>(x[R - 6], lift_of(R - 6), five, out);
+// The 6 x 6 minors of rows 0 .. 5 of [x | lift] over the sets of 6 columns: level 6.
+void lifted_minors6(const std::int64_t (*x)[kMaxColumns], const Int128* lift, MinorLevel<6>& out) {
+  MinorLevel<1> one;
+  for (int j = 0; j < kTableColumns; ++j) one[1u << j] = j == kTableColumns - 1 ? Wide<2>::from(lift[5]) : Wide<2>::from(x[5][j]);
+  MinorLevel<2> two;
+  MinorLevel<3> three;
+  MinorLevel<4> four;
+  MinorLevel<5> five;
+  next_minors<2>(x[4], lift[4], one, two);
+  next_minors<3>(x[3], lift[3], two, three);
+  next_minors<4>(x[2], lift[2], three, four);
+  next_minors<5>(x[1], lift[1], four, five);
+  next_minors<6>(x[0], lift[0], five, out);
 }
 
 }  // namespace
@@ -374,8 +371,8 @@ bool WideLiftedCofactors::prepare_fixed(const Frame& f, const double* const* poi
   if constexpr (D == 6) {
     // x's row is the seventh of seven: cofactor signs +, -, +, -, +, - along its spatial
     // entries, + at its lift (column 6).
-    MinorLevel<6, 7, true> minors;
-    top_minors6<7, true>(x, lift, minors);
+    MinorLevel<6> minors;
+    lifted_minors6(x, lift, minors);
     for (int c = 0; c < 6; ++c) spatial6_[c] = (c & 1) ? -minors[0x7f & ~(1u << c)] : minors[0x7f & ~(1u << c)];
     lift6_ = minors[0x3f];
   } else if constexpr (D == 5) {
