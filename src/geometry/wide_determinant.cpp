@@ -171,7 +171,8 @@ Wide<5> spatial5(const std::int64_t (*x)[kMaxColumns]) {
 
 // The 6 x 6 spatial determinant of rows 0 .. 5 of x, by Laplace along rows (0, 1), and each
 // 4 x 4 minor of rows 2 .. 5 along rows (2, 3) (as laplace4): 105 products, where a table as
-// below took 192 (and 9% more instructions on a 6D grid of 0.1 k). 2 x 2 minors below 2^125, 4 x 4 ones below 2^252.6, the sum below 2^381.5.
+// below took 192 (and 9% more instructions on a 6D grid of 0.1 k). 2 x 2 minors below 2^125,
+// 4 x 4 ones below 2^252.6, the sum below 2^381.5.
 Wide<6> spatial6(const std::int64_t (*x)[kMaxColumns]) {
   Wide<2> top[15], middle[15], bottom[15];
   pair_minors<6>(x, 0, 1, top);
