@@ -101,9 +101,9 @@ constexpr int pair_index(int a, int b, int n = 4) { return a * (2 * n - a - 1) /
 // The 2 x 2 minors of rows r, s of x on the pairs of the first N columns, by pair_index.
 template <int N>
 void pair_minors(const std::int64_t (*x)[kMaxColumns], int r, int s, Wide<2> (&m)[N * (N - 1) / 2]) {
-  #pragma GCC unroll 10
+#pragma GCC unroll 10
   for (int a = 0; a < N; ++a)
-    #pragma GCC unroll 10
+#pragma GCC unroll 10
     for (int b = a + 1; b < N; ++b) m[pair_index(a, b, N)] = Wide<2>::from(minor2(x[r][a], x[r][b], x[s][a], x[s][b]));
 }
 
@@ -128,7 +128,7 @@ Wide<4> spatial4(const std::int64_t (*x)[kMaxColumns], int r0, int r1, int r2, i
 // the columns other than a < b, along `row`: below 3 2^187 < 2^189.
 Wide<3> triple5(const std::int64_t* row, const Wide<2> (&m)[10], int a, int b) {
   int c[3], n = 0;
-  #pragma GCC unroll 10
+#pragma GCC unroll 10
   for (int k = 0; k < 5; ++k)
     if (k != a && k != b) c[n++] = k;
   return Wide<1>::from(row[c[0]]) * m[pair_index(c[1], c[2], 5)] - Wide<1>::from(row[c[1]]) * m[pair_index(c[0], c[2], 5)] +
@@ -141,9 +141,9 @@ Wide<3> triple5(const std::int64_t* row, const Wide<2> (&m)[10], int a, int b) {
 // product below 2^125 2^189, the ten below 2^318.
 Wide<5> laplace5(const Wide<2> (&top)[10], const Wide<3> (&bottom)[10]) {
   Wide<5> det = Wide<5>::from(0);
-  #pragma GCC unroll 10
+#pragma GCC unroll 10
   for (int a = 0; a < 5; ++a)
-    #pragma GCC unroll 10
+#pragma GCC unroll 10
     for (int b = a + 1; b < 5; ++b) {
       const Wide<5> term = top[pair_index(a, b, 5)] * bottom[pair_index(a, b, 5)];
       det = ((a + b) & 1) ? det + term : det - term;
@@ -153,9 +153,9 @@ Wide<5> laplace5(const Wide<2> (&top)[10], const Wide<3> (&bottom)[10]) {
 
 // The 3 x 3 minors of rows 2, 3, 4 of x over 5 columns, by the pair of columns they leave out.
 void bottom_triples5(const std::int64_t (*x)[kMaxColumns], const Wide<2> (&rows34)[10], Wide<3> (&bottom)[10]) {
-  #pragma GCC unroll 10
+#pragma GCC unroll 10
   for (int a = 0; a < 5; ++a)
-    #pragma GCC unroll 10
+#pragma GCC unroll 10
     for (int b = a + 1; b < 5; ++b) bottom[pair_index(a, b, 5)] = triple5(x[2], rows34, a, b);
 }
 
@@ -446,26 +446,26 @@ void WideLiftedCofactors::prepare5(const std::int64_t (*x)[kMaxDim], const Int12
   Wide<3> bottom[10];  // spatial 3 x 3 minors of rows 2, 3, 4, by the column pair left out
   bottom_triples5(x, rows34, bottom);
   Wide<4> bottom_lift[10];  // rows 2, 3, 4 over columns u < v and L, by (u, v)
-  #pragma GCC unroll 10
+#pragma GCC unroll 10
   for (int i = 0; i < 10; ++i)
     bottom_lift[i] = Wide<2>::from(lift[2]) * rows34[i] - Wide<2>::from(lift[3]) * rows24[i] + Wide<2>::from(lift[4]) * rows23[i];
   Wide<3> top_lift[5];
-  #pragma GCC unroll 10
+#pragma GCC unroll 10
   for (int a = 0; a < 5; ++a)
     top_lift[a] = Wide<1>::from(x[0][a]) * Wide<2>::from(lift[1]) - Wide<1>::from(x[1][a]) * Wide<2>::from(lift[0]);
-  #pragma GCC unroll 10
+#pragma GCC unroll 10
   for (int c = 0; c < 5; ++c) {
     int col[4], n = 0;
-    #pragma GCC unroll 10
+#pragma GCC unroll 10
     for (int k = 0; k < 5; ++k)
       if (k != c) col[n++] = k;
     Wide<6> minor = Wide<6>::from(0);
-    #pragma GCC unroll 10
+#pragma GCC unroll 10
     for (int p = 0; p < 4; ++p) {
-      #pragma GCC unroll 10
+#pragma GCC unroll 10
       for (int q = p + 1; q < 4; ++q) {
         int other[2], m = 0;
-        #pragma GCC unroll 10
+#pragma GCC unroll 10
         for (int t = 0; t < 4; ++t)
           if (t != p && t != q) other[m++] = col[t];
         const Wide<6> term = top[pair_index(col[p], col[q], 5)] * bottom_lift[pair_index(other[0], other[1], 5)];
@@ -509,8 +509,8 @@ std::optional<int> WideLiftedCofactors::sign_with_fixed(const double* point) con
   } else if constexpr (D == 5) {
     // Each product below 2^443.4 (the lift's) and 2^443.3 (the spatial ones'), the sum below
     // 2^446.1: held in 512 bits, for a margin.
-    Wide<8> det = widen<8>(Wide<2>::from(lift) * lift5_);
-    for (int c = 0; c < 5; ++c) det = det + widen<8>(Wide<1>::from(x[c]) * spatial5_[c]);
+    Wide<8> det = resize<8>(Wide<2>::from(lift) * lift5_);
+    for (int c = 0; c < 5; ++c) det = det + resize<8>(Wide<1>::from(x[c]) * spatial5_[c]);
     return det.sign();
   } else if constexpr (D == 4) {
     // Each product below 2^379, the sum below 2^381.

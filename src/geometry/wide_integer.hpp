@@ -117,16 +117,6 @@ DRANGE_WIDE_INLINE Wide<A + B> operator*(const Wide<A>& a, const Wide<B>& b) {
   return out;
 }
 
-// a in M >= N limbs (sign-extended).
-template <int M, int N>
-DRANGE_WIDE_INLINE Wide<M> widen(const Wide<N>& a) {
-  static_assert(M >= N, "widen only widens");
-  Wide<M> out;
-  for (int i = 0; i < N; ++i) out.limb[i] = a.limb[i];
-  for (int i = N; i < M; ++i) out.limb[i] = a.negative() ? ~std::uint64_t{0} : 0;
-  return out;
-}
-
 // a in M limbs: sign-extended, or its low M limbs where the value is known to fit in them.
 template <int M, int N>
 DRANGE_WIDE_INLINE Wide<M> resize(const Wide<N>& a) {
