@@ -124,7 +124,7 @@ Wide<4> spatial4(const std::int64_t (*x)[kMaxColumns], int r0, int r1, int r2, i
   return laplace4(top, bottom);
 }
 
-// The 3 x 3 minor of row `row` over a row pair whose 2 x 2 minors on 5 columns are `m`, on
+// The 3 x 3 minor of `row` above the two rows whose 2 x 2 minors on 5 columns are `m`, over
 // the columns other than a < b, along `row`: below 3 2^187 < 2^189.
 Wide<3> triple5(const std::int64_t* row, const Wide<2> (&m)[10], int a, int b) {
   int c[3], n = 0;
