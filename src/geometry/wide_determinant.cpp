@@ -107,8 +107,6 @@ void pair_minors(const std::int64_t (*x)[kMaxColumns], int r, int s, Wide<2> (&m
     for (int b = a + 1; b < N; ++b) m[pair_index(a, b, N)] = Wide<2>::from(minor2(x[r][a], x[r][b], x[s][a], x[s][b]));
 }
 
-void pair_minors4(const std::int64_t (*x)[kMaxColumns], int r, int s, Wide<2> (&m)[6]) { pair_minors<4>(x, r, s, m); }
-
 // A 4 x 4 determinant by Laplace along its first two rows, from their 2 x 2 minors (top) and
 // the last two rows' (bottom): the sum over column pairs a < b of (-1)^(a + b + 1) top(a, b)
 // bottom(the other two). Each minor below 2^125, each product below 2^250, the sum below 2^253.
@@ -119,8 +117,8 @@ Wide<4> laplace4(const Wide<2> (&top)[6], const Wide<2> (&bottom)[6]) {
 // The 4 x 4 spatial determinant of rows r0, r1, r2, r3 of x.
 Wide<4> spatial4(const std::int64_t (*x)[kMaxColumns], int r0, int r1, int r2, int r3) {
   Wide<2> top[6], bottom[6];
-  pair_minors4(x, r0, r1, top);
-  pair_minors4(x, r2, r3, bottom);
+  pair_minors<4>(x, r0, r1, top);
+  pair_minors<4>(x, r2, r3, bottom);
   return laplace4(top, bottom);
 }
 
@@ -406,8 +404,8 @@ void WideLiftedCofactors::prepare4(const std::int64_t (*x)[kMaxDim], const Int12
   // (Expanding along the lift column instead, as 3 x 3 minors times lifts, took 16 products of
   // products where this takes 6 per column: callgrind, a 4D grid of 0.1 k, prepare4 -32%.)
   Wide<2> top[6], bottom[6];
-  pair_minors4(x, 0, 1, top);
-  pair_minors4(x, 2, 3, bottom);
+  pair_minors<4>(x, 0, 1, top);
+  pair_minors<4>(x, 2, 3, bottom);
   const auto lift_minor = [&](int r, int s, int a) {
     return Wide<1>::from(x[r][a]) * Wide<2>::from(lift[s]) - Wide<1>::from(x[s][a]) * Wide<2>::from(lift[r]);
   };
