@@ -180,12 +180,13 @@ TEST(WideDeterminant, CofactorsGiveTheWholeDeterminantsSign) {
   for (int kind : {0, 1, 2, 4}) EXPECT_GT(accepted[kind], tested[kind] * 3 / 4) << "kind " << kind;
   EXPECT_GT(zeros, 500);
 }
-TEST(WideDeterminant, FiveAndSixDimensionalSignsMatchGmp) {
-  // 5 x 5 and 6 x 6 orientations, 6 x 6 and 7 x 7 lifted determinants, whole (wide_orientation,
-  // wide_lifted_sign) and by a candidate's cofactors, on the kinds above and on extremes.
-  for (const int dim : {5, 6}) {
+TEST(WideDeterminant, FiveToSevenDimensionalSignsMatchGmp) {
+  // 5 x 5 to 7 x 7 orientations, 6 x 6 to 8 x 8 lifted determinants, whole (wide_orientation,
+  // wide_lifted_sign) and by a candidate's cofactors, and orientations by a facet's cofactors
+  // (6D, 7D), on the kinds above and on extremes.
+  for (const int dim : {5, 6, 7}) {
     std::mt19937_64 rng(11);
-    int decided[2] = {0, 0}, accepted = 0, tested = 0, zeros = 0;
+    int decided[2] = {0, 0}, accepted = 0, tested = 0, zeros = 0, plane_accepted = 0, plane_tested = 0, plane_zeros = 0;
     for (int trial = 0; trial < 3000; ++trial) {
       const int kind = static_cast<int>(rng() % 6);
       // Kind 5: corners of a box of decimal sides, all on one sphere (every lifted determinant
@@ -210,6 +211,21 @@ TEST(WideDeterminant, FiveAndSixDimensionalSignsMatchGmp) {
         ++decided[lifted];
         if (*s == 0) ++zeros;
       }
+      // A facet's orientation cofactors (6D, 7D): rows 0 .. dim - 2, then x as row dim - 1.
+      drange::geometry::WideOrientationCofactors plane;
+      if (dim >= drange::geometry::WideOrientationCofactors::kMinDim && plane.prepare(f, rows.data())) {
+        std::vector<const double*> plane_rows(rows.begin(), rows.begin() + dim);
+        for (int j = 0; j < 5; ++j) {
+          const std::vector<double> x = draw();
+          plane_rows.back() = x.data();
+          ++plane_tested;
+          const std::optional<int> s = plane.sign_with(x.data());
+          if (!s) continue;
+          ++plane_accepted;
+          if (*s == 0) ++plane_zeros;
+          ASSERT_EQ(*s, gmp_sign(f, plane_rows.data(), false)) << "dim " << dim << " trial " << trial << " kind " << kind;
+        }
+      }
       drange::geometry::WideLiftedCofactors cofactors;
       if (!cofactors.prepare(f, rows.data())) continue;
       for (int j = 0; j < 5; ++j) {
@@ -225,11 +241,16 @@ TEST(WideDeterminant, FiveAndSixDimensionalSignsMatchGmp) {
     }
     // With this seed, in 5D: 2 819 orientations and 2 793 lifted determinants decided whole,
     // 13 950 of 14 095 tests by cofactors, 3 207 zeros; in 6D 2 770, 2 741, 13 740 of 13 850
-    // and 3 077.
+    // and 3 077; in 7D 2 755, 2 740, 13 643 of 13 775 and 3 324. By a facet's cofactors: in 6D
+    // 13 981 of 14 105, 1 431 zeros; in 7D 13 844 of 13 965, 1 273.
     EXPECT_GT(decided[0], 2000) << "dim " << dim;
     EXPECT_GT(decided[1], 2000) << "dim " << dim;
     EXPECT_GT(accepted, tested * 9 / 10) << "dim " << dim;
     EXPECT_GT(zeros, 2000) << "dim " << dim;
+    if (dim >= drange::geometry::WideOrientationCofactors::kMinDim) {
+      EXPECT_GT(plane_accepted, plane_tested * 9 / 10) << "dim " << dim;
+      EXPECT_GT(plane_zeros, 1000) << "dim " << dim;
+    }
   }
 }
 }  // namespace

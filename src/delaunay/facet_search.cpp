@@ -339,6 +339,14 @@ class SearchKernel final : public FacetSearch::Kernel {
   // The same for the facet's hyperplane (exact_open_side), computed at the facet's first.
   geometry::RefinedCofactors plane_refined_;
   bool plane_refined_ready_ = false;
+  // And in fixed-width integers from 6D (wide_determinant.hpp), at the facet's first use;
+  // plane_wide_usable_ when they fit. Half the fixed-width orientations of a 7D grid of 0.1 k
+  // were the search's (the rest the perturbation's): each was a whole 7 x 7 determinant.
+  geometry::WideOrientationCofactors plane_wide_;
+  bool plane_wide_ready_ = false, plane_wide_usable_ = false;
+  // The fixed-width stage of exact_open_side: the facet's cofactors from 6D, else the whole
+  // determinant (rows_ holds x last).
+  std::optional<int> fixed_width_open_side(const geometry::Frame& frame, const double* x);
   // Ties minus near-ties among the recent exact lifted tests (tie_balance_, exact_beats) and
   // orientations (plane_tie_balance_, exact_open_side), within +-kTieBalanceLimit: positive, the
   // fixed-width integer stage goes before the double-double one. They order the stages only;
@@ -449,7 +457,7 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
   sigma_ = sigma;
   f0_ = points_.point(facet[0]);
   flat_axes_ = kFlatAxesUnknown;
-  plane_refined_ready_ = refined_facet_ready_ = false;
+  plane_refined_ready_ = refined_facet_ready_ = plane_wide_ready_ = false;
   for (int k = 0; k < d; ++k) centroid_[static_cast<std::size_t>(k)] = 0.0;
   for (int i = 0; i < d; ++i) {
     const double* f = points_.point(facet[i]);
@@ -960,7 +968,8 @@ int SearchKernel<D>::exact_open_side(std::int32_t id) {
   if (plane_ties_.holds(facet_, id)) return 0;
   // As exact_beats: the fixed-width stage first where the recent exact orientations were mostly
   // ties (a grid's coplanar points), which the double-double stage never decides.
-  std::optional<int> small = plane_tie_balance_ > 0 ? geometry::small_integer_orientation(frame, rows_.data()) : std::nullopt;
+  std::optional<int> small;
+  if (plane_tie_balance_ > 0) small = fixed_width_open_side(frame, x);
   if (!small) {
     // The double-double stage as the facet's cofactors, computed at its first near-tie: each
     // point then costs a dot product (a 4D lattice's hyperplanes hold many points).
@@ -974,6 +983,24 @@ int SearchKernel<D>::exact_open_side(std::int32_t id) {
   note_outcome(plane_tie_balance_, s == 0);
   if (s == 0) plane_ties_.record(facet_, id);
   return sigma_ * s;
+}
+
+template <int D>
+std::optional<int> SearchKernel<D>::fixed_width_open_side(const geometry::Frame& frame, const double* x) {
+  if (dim() >= geometry::WideOrientationCofactors::kMinDim) {
+    if (!plane_wide_ready_) {
+      plane_wide_usable_ = plane_wide_.prepare(frame, rows_.data());
+      plane_wide_ready_ = true;
+    }
+    if (plane_wide_usable_) {
+      const std::optional<int> s = plane_wide_.sign_with(x);
+      if (s) {
+        geometry::count_exact_evaluation();
+        return s;
+      }
+    }
+  }
+  return geometry::small_integer_orientation(frame, rows_.data());
 }
 
 template <int D>

@@ -16,7 +16,7 @@
 namespace drange::geometry {
 namespace {
 
-constexpr int kMaxColumns = WideLiftedCofactors::kMaxDim;  // 6 x 6 orientations, 7 x 7 lifted determinants (6D)
+constexpr int kMaxColumns = WideLiftedCofactors::kMaxDim;  // 7 x 7 orientations, 8 x 8 lifted determinants (7D)
 // The largest difference taken, in the common unit: below it, a difference's rounding to a
 // double and its error are each at most 2^62 - 2^10 and 2^8, so the difference is below 2^62,
 // the bound of every formula below.
@@ -201,13 +201,15 @@ Wide<6> spatial6(const std::int64_t (*x)[kMaxColumns]) {
   return det;
 }
 
-// The 6D lifted cofactors from a table of minors over column sets: the m x m minors of the
-// last m of the 6 rows, for every set of m of the 7 columns (the lift last), each along its
-// first row from the (m - 1) x (m - 1) minors below it (Laplace), for m = 1 .. 6: 441
-// products, written once for any size instead of expansions written out.
+// Tables of minors over column sets, for the 6D and 7D lifted cofactors and the 7 x 7
+// orientation: the m x m minors of the last m of the rows, for every set of m of the C columns
+// (with kLift, the last column is the rows' lift), each along its first row from the
+// (m - 1) x (m - 1) minors below it (Laplace), for m = 1 .. the row count. 6D lifted: 441
+// products; 7D lifted: 1 008; 7 x 7 orientation: 441. Written once for any size instead of
+// expansions written out.
 //
 // The limbs of an m x m minor: m! terms of m entries, each below 2^62 but for one lift (below
-// 2^126.6 in 6D), plus a sign bit.
+// 2^126.9 up to 7D: 7 squares below 2^124), plus a sign bit.
 constexpr int minor_limbs(int m) {
   int factorial = 1, log = 0;
   for (int i = 2; i <= m; ++i) factorial *= i;
@@ -215,38 +217,37 @@ constexpr int minor_limbs(int m) {
   return (62 * m + 65 + log + 1 + 63) / 64;
 }
 
-constexpr int kTableColumns = 7;  // 6 spatial and the lift
-template <int M>
-using MinorLevel = Wide<minor_limbs(M)>[1 << kTableColumns];
+template <int C, int M>
+using MinorLevel = Wide<minor_limbs(M)>[1 << C];
 
 constexpr int binomial(int n, int k) { return k == 0 ? 1 : binomial(n - 1, k - 1) * n / k; }
 
-// The sets of M columns, as bit masks, laid out at compile time (__builtin_popcount is a libgcc
-// call on plain x86-64: counting at run time took 19% of a 6D grid of 0.1 k).
-template <int M>
+// The sets of M of C columns, as bit masks, laid out at compile time (__builtin_popcount is a
+// libgcc call on plain x86-64: counting at run time took 19% of a 6D grid of 0.1 k).
+template <int C, int M>
 struct ColumnSets {
-  unsigned mask[binomial(kTableColumns, M)];
+  unsigned mask[binomial(C, M)];
   constexpr ColumnSets() : mask() {
     int n = 0;
-    for (unsigned m = 0; m < (1u << kTableColumns); ++m)
+    for (unsigned m = 0; m < (1u << C); ++m)
       if (bit_count(m) == M) mask[n++] = m;
   }
 };
 
-// Level M (rows 6 - M .. 5) from level M - 1, along row `row`, whose lift is `lift`.
-template <int M>
-void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<M - 1>& below, MinorLevel<M>& out) {
+// Level M from level M - 1, along row `row` (with kLift, `lift` is its entry in column C - 1).
+template <int C, int M, bool kLift>
+void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<C, M - 1>& below, MinorLevel<C, M>& out) {
   constexpr int L = minor_limbs(M);
-  constexpr int kLift = kTableColumns - 1;
-  static constexpr ColumnSets<M> kSets;
+  static constexpr ColumnSets<C, M> kSets;
   for (const unsigned mask : kSets.mask) {
     Wide<L> sum = Wide<L>::from(0);
     int position = 0;
 #pragma GCC unroll 8
-    for (int j = 0; j < kTableColumns; ++j) {
+    for (int j = 0; j < C; ++j) {
       if ((mask & (1u << j)) == 0) continue;
       const auto& minor = below[mask & ~(1u << j)];
-      const Wide<L> term = j == kLift ? resize<L>(Wide<2>::from(lift) * minor) : resize<L>(Wide<1>::from(row[j]) * minor);
+      const Wide<L> term =
+          kLift && j == C - 1 ? resize<L>(Wide<2>::from(lift) * minor) : resize<L>(Wide<1>::from(row[j]) * minor);
       sum = (position & 1) ? sum - term : sum + term;
       ++position;
     }
@@ -254,19 +255,38 @@ void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<M - 1>& 
   }
 }
 
-// The 6 x 6 minors of rows 0 .. 5 of [x | lift] over the sets of 6 columns: level 6.
-void lifted_minors6(const std::int64_t (*x)[kMaxColumns], const Int128* lift, MinorLevel<6>& out) {
-  MinorLevel<1> one;
-  for (int j = 0; j < kTableColumns; ++j) one[1u << j] = j == kTableColumns - 1 ? Wide<2>::from(lift[5]) : Wide<2>::from(x[5][j]);
-  MinorLevel<2> two;
-  MinorLevel<3> three;
-  MinorLevel<4> four;
-  MinorLevel<5> five;
-  next_minors<2>(x[4], lift[4], one, two);
-  next_minors<3>(x[3], lift[3], two, three);
-  next_minors<4>(x[2], lift[2], three, four);
-  next_minors<5>(x[1], lift[1], four, five);
-  next_minors<6>(x[0], lift[0], five, out);
+// Levels M .. R of the table of rows 0 .. R - 1 (level m over the last m rows), from level
+// M - 1; level R into `out`.
+template <int C, int R, int M, bool kLift>
+void next_levels(const std::int64_t (*x)[kMaxColumns], const Int128* lift, const MinorLevel<C, M - 1>& below,
+                 MinorLevel<C, R>& out) {
+  const int row = R - M;
+  const Int128 entry = kLift ? lift[row] : 0;
+  if constexpr (M == R) {
+    next_minors<C, M, kLift>(x[row], entry, below, out);
+  } else {
+    MinorLevel<C, M> level;
+    next_minors<C, M, kLift>(x[row], entry, below, level);
+    next_levels<C, R, M + 1, kLift>(x, lift, level, out);
+  }
+}
+
+// The R x R minors of rows 0 .. R - 1 of x (with kLift, of [x | lift]) over the sets of R of
+// the C columns.
+template <int C, int R, bool kLift>
+void table_of_minors(const std::int64_t (*x)[kMaxColumns], const Int128* lift, MinorLevel<C, R>& out) {
+  MinorLevel<C, 1> one;
+  for (int j = 0; j < C; ++j)
+    one[1u << j] = kLift && j == C - 1 ? Wide<2>::from(lift[R - 1]) : Wide<2>::from(x[R - 1][j]);
+  next_levels<C, R, 2, kLift>(x, lift, one, out);
+}
+
+// The 7 x 7 spatial determinant of rows 0 .. 6 of x: 5 040 terms below 2^434, the sum below
+// 2^446.3.
+Wide<minor_limbs(7)> spatial7(const std::int64_t (*x)[kMaxColumns]) {
+  MinorLevel<7, 7> minors;
+  table_of_minors<7, 7, false>(x, nullptr, minors);
+  return minors[0x7f];
 }
 
 }  // namespace
@@ -293,6 +313,7 @@ std::optional<int> wide_orientation(const Frame& f, const double* const* points)
   if (k == 4) return spatial4(a, 0, 1, 2, 3).sign();
   if (k == 5) return spatial5(a).sign();
   if (k == 6) return spatial6(a).sign();
+  if (k == 7) return spatial7(a).sign();
   // Along the last row: each term below 2^187, the sum below 2^189.
   const Wide<3> det = Wide<1>::from(a[2][0]) * Wide<2>::from(minor2(a[0][1], a[0][2], a[1][1], a[1][2])) -
                       Wide<1>::from(a[2][1]) * Wide<2>::from(minor2(a[0][0], a[0][2], a[1][0], a[1][2])) +
@@ -304,7 +325,7 @@ std::optional<int> wide_lifted_sign(const Frame& f, const double* const* points)
   const int k = f.k, n = k + 1;
   if (k < 2 || k > kMaxColumns || f.dim > kMaxColumns) return std::nullopt;
   if (k >= 5) {
-    // 5D and 6D: the cofactors along the last row, then its dot product with them.
+    // 5D to 7D: the cofactors along the last row, then its dot product with them.
     WideLiftedCofactors cofactors;
     if (!cofactors.prepare(f, points)) return std::nullopt;
     return cofactors.sign_with(points[k]);
@@ -317,6 +338,8 @@ std::optional<int> wide_lifted_sign(const Frame& f, const double* const* points)
   // Rows [pi(p_r - base), |p_r - base|^2]: the lift below dim 2^124 <= 2^126.
   const double inverse = unit.inverse();
   if (inverse == 0.0) return std::nullopt;
+  // Up to 4 x 4 spatial minors, the bounds below hold for lifts below 2^126 (6D).
+  if (f.dim > 6) return std::nullopt;
   std::int64_t x[kMaxColumns + 1][kMaxColumns];
   Int128 lift[kMaxColumns + 1];
   if (!lifted_rows(f, inverse, points, n, x, lift)) return std::nullopt;
@@ -356,6 +379,7 @@ bool WideLiftedCofactors::prepare(const Frame& f, const double* const* points) {
   if (f.dim == 4) return prepare_fixed<4>(f, points);
   if (f.dim == 5) return prepare_fixed<5>(f, points);
   if (f.dim == 6) return prepare_fixed<6>(f, points);
+  if (f.dim == 7) return prepare_fixed<7>(f, points);
   return false;
 }
 
@@ -373,13 +397,10 @@ bool WideLiftedCofactors::prepare_fixed(const Frame& f, const double* const* poi
   std::int64_t x[kMaxColumns][kMaxColumns];
   Int128 lift[kMaxColumns];
   if (!lifted_rows(f, inverse_, points, D, x, lift)) return false;
-  if constexpr (D == 6) {
-    // x's row is the seventh of seven: cofactor signs +, -, +, -, +, - along its spatial
-    // entries, + at its lift (column 6).
-    MinorLevel<6> minors;
-    lifted_minors6(x, lift, minors);
-    for (int c = 0; c < 6; ++c) spatial6_[c] = (c & 1) ? -minors[0x7f & ~(1u << c)] : minors[0x7f & ~(1u << c)];
-    lift6_ = minors[0x3f];
+  if constexpr (D == 7) {
+    table_cofactors<7>(x, lift, spatial7_, lift7_);
+  } else if constexpr (D == 6) {
+    table_cofactors<6>(x, lift, spatial6_, lift6_);
   } else if constexpr (D == 5) {
     prepare5(x, lift);
   } else if constexpr (D == 4) {
@@ -398,6 +419,19 @@ bool WideLiftedCofactors::prepare_fixed(const Frame& f, const double* const* poi
     lift3_ = Wide<1>::from(x[2][0]) * m[0][0] - Wide<1>::from(x[2][1]) * m[0][1] + Wide<1>::from(x[2][2]) * m[0][2];
   }
   return true;
+}
+
+template <int D, int L>
+void WideLiftedCofactors::table_cofactors(const std::int64_t (*x)[kMaxDim], const Int128* lift, Wide<L> (&spatial)[D],
+                                          Wide<L>& lift_cofactor) {
+  static_assert(L == minor_limbs(D), "the table's top level");
+  // x's row is the last of D + 1: the cofactor of column c has the sign (-1)^(D + c), + at the
+  // lift (column D); each is the minor of rows 0 .. D - 1 without that column.
+  constexpr unsigned kAll = (1u << (D + 1)) - 1;
+  MinorLevel<D + 1, D> minors;
+  table_of_minors<D + 1, D, true>(x, lift, minors);
+  for (int c = 0; c < D; ++c) spatial[c] = ((D + c) & 1) ? -minors[kAll & ~(1u << c)] : minors[kAll & ~(1u << c)];
+  lift_cofactor = minors[kAll & ~(1u << D)];
 }
 
 void WideLiftedCofactors::prepare4(const std::int64_t (*x)[kMaxDim], const Int128* lift) {
@@ -486,7 +520,8 @@ std::optional<int> WideLiftedCofactors::sign_with(const double* point) const {
     case 3: return sign_with_fixed<3>(point);
     case 4: return sign_with_fixed<4>(point);
     case 5: return sign_with_fixed<5>(point);
-    default: return sign_with_fixed<6>(point);
+    case 6: return sign_with_fixed<6>(point);
+    default: return sign_with_fixed<7>(point);
   }
 }
 
@@ -501,7 +536,13 @@ std::optional<int> WideLiftedCofactors::sign_with_fixed(const double* point) con
     if (!difference(point[c], base_[c], inverse_, x[c])) return std::nullopt;
     lift += product(x[c], x[c]);
   }
-  if constexpr (D == 6) {
+  if constexpr (D == 7) {
+    // The 8 x 8 determinant: each product below 2^126.9 2^446.3 (the lift's) and 2^62 2^511.1
+    // (the spatial ones'), the sum of eight below 2^576.2; held in 640 bits.
+    Wide<10> det = resize<10>(Wide<2>::from(lift) * lift7_);
+    for (int c = 0; c < 7; ++c) det = det + resize<10>(Wide<1>::from(x[c]) * spatial7_[c]);
+    return det.sign();
+  } else if constexpr (D == 6) {
     // The 7 x 7 determinant: 7! terms of six differences and a lift, below 2^510.9; held in
     // 576 bits, for a margin.
     Wide<9> det = resize<9>(Wide<2>::from(lift) * lift6_);
@@ -524,6 +565,56 @@ std::optional<int> WideLiftedCofactors::sign_with_fixed(const double* point) con
     for (int c = 0; c < 3; ++c) det = det + Wide<1>::from(x[c]) * spatial3_[c];
     return det.sign();
   }
+}
+
+bool WideOrientationCofactors::prepare(const Frame& f, const double* const* points) {
+  if (!(f.k == f.dim && f.axes == nullptr)) return false;
+  dim_ = f.dim;
+  if (f.dim == 6) return prepare_fixed<6>(f, points);
+  if (f.dim == 7) return prepare_fixed<7>(f, points);
+  return false;
+}
+
+template <int D>
+bool WideOrientationCofactors::prepare_fixed(const Frame& f, const double* const* points) {
+  CommonUnit unit;
+  for (int c = 0; c < D; ++c) {
+    unit.include(f.base[c]);
+    for (int r = 0; r < D - 1; ++r) unit.include(points[r][c]);
+  }
+  unit_ = unit.unit();
+  inverse_ = unit.inverse();
+  if (inverse_ == 0.0) return false;
+  std::int64_t x[kMaxColumns][kMaxColumns];
+  for (int c = 0; c < D; ++c) {
+    base_[c] = f.base[c];
+    for (int r = 0; r < D - 1; ++r)
+      if (!difference(points[r][c], f.base[c], inverse_, x[r][c])) return false;
+  }
+  // x's row is the last of D: the cofactor of column c has the sign (-1)^(D - 1 + c), and is
+  // the minor of rows 0 .. D - 2 without column c.
+  constexpr unsigned kAll = (1u << D) - 1;
+  MinorLevel<D, D - 1> minors;
+  table_of_minors<D, D - 1, false>(x, nullptr, minors);
+  for (int c = 0; c < D; ++c) {
+    const Wide<7> minor = resize<7>(minors[kAll & ~(1u << c)]);
+    cofactors_[c] = ((D - 1 + c) & 1) ? -minor : minor;
+  }
+  return true;
+}
+
+std::optional<int> WideOrientationCofactors::sign_with(const double* point) const {
+  CommonUnit unit;
+  for (int c = 0; c < dim_; ++c) unit.include(point[c]);
+  if (unit.unit() < unit_) return std::nullopt;  // a lower set bit than the rows' unit
+  // Each product below 2^62 2^381.5, the sum of seven below 2^446.3: held in 512 bits.
+  Wide<8> det = Wide<8>::from(0);
+  for (int c = 0; c < dim_; ++c) {
+    std::int64_t x = 0;
+    if (!difference(point[c], base_[c], inverse_, x)) return std::nullopt;
+    det = det + Wide<1>::from(x) * cofactors_[c];
+  }
+  return det.sign();
 }
 
 }  // namespace drange::geometry
