@@ -208,17 +208,17 @@ Wide<6> spatial6(const std::int64_t (*x)[kMaxColumns]) {
 // products; 7D lifted: 1 008; 7 x 7 orientation: 441. Written once for any size instead of
 // expansions written out.
 //
-// The limbs of an m x m minor: m! terms of m entries, each below 2^62 but for one lift (below
-// 2^126.9 up to 7D: 7 squares below 2^124), plus a sign bit.
-constexpr int minor_limbs(int m) {
+// The limbs of an m x m minor: m! terms of m entries, each below 2^62 but for one lift where
+// the table has a lift column (below 2^126.9 up to 7D: 7 squares below 2^124), plus a sign bit.
+constexpr int minor_limbs(int m, bool lift = true) {
   int factorial = 1, log = 0;
   for (int i = 2; i <= m; ++i) factorial *= i;
   while ((1 << log) < factorial) ++log;
-  return (62 * m + 65 + log + 1 + 63) / 64;
+  return (62 * m + (lift ? 65 : 0) + log + 1 + 63) / 64;
 }
 
-template <int C, int M>
-using MinorLevel = Wide<minor_limbs(M)>[1 << C];
+template <int C, int M, bool kLift>
+using MinorLevel = Wide<minor_limbs(M, kLift)>[1 << C];
 
 constexpr int binomial(int n, int k) { return k == 0 ? 1 : binomial(n - 1, k - 1) * n / k; }
 
@@ -236,8 +236,8 @@ struct ColumnSets {
 
 // Level M from level M - 1, along row `row` (with kLift, `lift` is its entry in column C - 1).
 template <int C, int M, bool kLift>
-void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<C, M - 1>& below, MinorLevel<C, M>& out) {
-  constexpr int L = minor_limbs(M);
+void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<C, M - 1, kLift>& below, MinorLevel<C, M, kLift>& out) {
+  constexpr int L = minor_limbs(M, kLift);
   static constexpr ColumnSets<C, M> kSets;
   for (const unsigned mask : kSets.mask) {
     Wide<L> sum = Wide<L>::from(0);
@@ -258,14 +258,14 @@ void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<C, M - 1
 // Levels M .. R of the table of rows 0 .. R - 1 (level m over the last m rows), from level
 // M - 1; level R into `out`.
 template <int C, int R, int M, bool kLift>
-void next_levels(const std::int64_t (*x)[kMaxColumns], const Int128* lift, const MinorLevel<C, M - 1>& below,
-                 MinorLevel<C, R>& out) {
+void next_levels(const std::int64_t (*x)[kMaxColumns], const Int128* lift, const MinorLevel<C, M - 1, kLift>& below,
+                 MinorLevel<C, R, kLift>& out) {
   const int row = R - M;
   const Int128 entry = kLift ? lift[row] : 0;
   if constexpr (M == R) {
     next_minors<C, M, kLift>(x[row], entry, below, out);
   } else {
-    MinorLevel<C, M> level;
+    MinorLevel<C, M, kLift> level;
     next_minors<C, M, kLift>(x[row], entry, below, level);
     next_levels<C, R, M + 1, kLift>(x, lift, level, out);
   }
@@ -274,17 +274,18 @@ void next_levels(const std::int64_t (*x)[kMaxColumns], const Int128* lift, const
 // The R x R minors of rows 0 .. R - 1 of x (with kLift, of [x | lift]) over the sets of R of
 // the C columns.
 template <int C, int R, bool kLift>
-void table_of_minors(const std::int64_t (*x)[kMaxColumns], const Int128* lift, MinorLevel<C, R>& out) {
-  MinorLevel<C, 1> one;
+void table_of_minors(const std::int64_t (*x)[kMaxColumns], const Int128* lift, MinorLevel<C, R, kLift>& out) {
+  MinorLevel<C, 1, kLift> one;
+  using Entry = Wide<minor_limbs(1, kLift)>;
   for (int j = 0; j < C; ++j)
-    one[1u << j] = kLift && j == C - 1 ? Wide<2>::from(lift[R - 1]) : Wide<2>::from(x[R - 1][j]);
+    one[1u << j] = kLift && j == C - 1 ? Entry::from(lift[R - 1]) : Entry::from(x[R - 1][j]);
   next_levels<C, R, 2, kLift>(x, lift, one, out);
 }
 
 // The 7 x 7 spatial determinant of rows 0 .. 6 of x: 5 040 terms below 2^434, the sum below
 // 2^446.3.
-Wide<minor_limbs(7)> spatial7(const std::int64_t (*x)[kMaxColumns]) {
-  MinorLevel<7, 7> minors;
+Wide<minor_limbs(7, false)> spatial7(const std::int64_t (*x)[kMaxColumns]) {
+  MinorLevel<7, 7, false> minors;
   table_of_minors<7, 7, false>(x, nullptr, minors);
   return minors[0x7f];
 }
@@ -428,7 +429,7 @@ void WideLiftedCofactors::table_cofactors(const std::int64_t (*x)[kMaxDim], cons
   // x's row is the last of D + 1: the cofactor of column c has the sign (-1)^(D + c), + at the
   // lift (column D); each is the minor of rows 0 .. D - 1 without that column.
   constexpr unsigned kAll = (1u << (D + 1)) - 1;
-  MinorLevel<D + 1, D> minors;
+  MinorLevel<D + 1, D, true> minors;
   table_of_minors<D + 1, D, true>(x, lift, minors);
   for (int c = 0; c < D; ++c) spatial[c] = ((D + c) & 1) ? -minors[kAll & ~(1u << c)] : minors[kAll & ~(1u << c)];
   lift_cofactor = minors[kAll & ~(1u << D)];
@@ -594,7 +595,7 @@ bool WideOrientationCofactors::prepare_fixed(const Frame& f, const double* const
   // x's row is the last of D: the cofactor of column c has the sign (-1)^(D - 1 + c), and is
   // the minor of rows 0 .. D - 2 without column c.
   constexpr unsigned kAll = (1u << D) - 1;
-  MinorLevel<D, D - 1> minors;
+  MinorLevel<D, D - 1, false> minors;
   table_of_minors<D, D - 1, false>(x, nullptr, minors);
   for (int c = 0; c < D; ++c) {
     const Wide<7> minor = resize<7>(minors[kAll & ~(1u << c)]);
