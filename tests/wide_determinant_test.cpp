@@ -187,6 +187,8 @@ TEST(WideDeterminant, FiveToSevenDimensionalSignsMatchGmp) {
   for (const int dim : {5, 6, 7}) {
     std::mt19937_64 rng(11);
     int decided[2] = {0, 0}, accepted = 0, tested = 0, zeros = 0, plane_accepted = 0, plane_tested = 0, plane_zeros = 0;
+    int reused_accepted = 0;
+    drange::geometry::WideLiftedCofactors reused;  // kept across the trials too
     for (int trial = 0; trial < 3000; ++trial) {
       const int kind = static_cast<int>(rng() % 6);
       // Kind 5: corners of a box of decimal sides, all on one sphere (every lifted determinant
@@ -226,6 +228,21 @@ TEST(WideDeterminant, FiveToSevenDimensionalSignsMatchGmp) {
           ASSERT_EQ(*s, gmp_sign(f, plane_rows.data(), false)) << "dim " << dim << " trial " << trial << " kind " << kind;
         }
       }
+      // One object for the trial's candidates: from 6D the facet's part of the table is kept
+      // between them (prepare_from_facet), so later candidates take that path.
+      if (dim >= 6) {
+        std::vector<const double*> lifted_rows = rows;
+        for (int j = 0; j < 3; ++j) {
+          const std::vector<double> candidate = draw(), x = draw();
+          lifted_rows[static_cast<std::size_t>(dim - 1)] = candidate.data();
+          lifted_rows.back() = x.data();
+          if (!reused.prepare(f, lifted_rows.data())) continue;
+          const std::optional<int> s = reused.sign_with(x.data());
+          if (!s) continue;
+          ++reused_accepted;
+          ASSERT_EQ(*s, gmp_sign(f, lifted_rows.data(), true)) << "dim " << dim << " trial " << trial << " kind " << kind << " candidate " << j;
+        }
+      }
       drange::geometry::WideLiftedCofactors cofactors;
       if (!cofactors.prepare(f, rows.data())) continue;
       for (int j = 0; j < 5; ++j) {
@@ -250,6 +267,7 @@ TEST(WideDeterminant, FiveToSevenDimensionalSignsMatchGmp) {
     if (dim >= drange::geometry::WideOrientationCofactors::kMinDim) {
       EXPECT_GT(plane_accepted, plane_tested * 9 / 10) << "dim " << dim;
       EXPECT_GT(plane_zeros, 1000) << "dim " << dim;
+      EXPECT_GT(reused_accepted, 7000) << "dim " << dim;
     }
   }
 }

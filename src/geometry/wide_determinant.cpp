@@ -202,9 +202,10 @@ Wide<6> spatial6(const std::int64_t (*x)[kMaxColumns]) {
 }
 
 // Tables of minors over column sets, for the 6D and 7D lifted cofactors and the 7 x 7
-// orientation: the m x m minors of the last m of the rows, for every set of m of the C columns
-// (with kLift, the last column is the rows' lift), each along its first row from the
-// (m - 1) x (m - 1) minors below it (Laplace), for m = 1 .. the row count. 6D lifted: 441
+// orientation: the m x m minors of the first m of the rows, for every set of m of the C columns
+// (with kLift, the last column is the rows' lift), each along its last row from the
+// (m - 1) x (m - 1) minors below it (Laplace), for m = 1 .. the row count. (First rows first: a
+// facet's levels then serve each of its candidates, whose row comes last.) 6D lifted: 441
 // products; 7D lifted: 1 008; 7 x 7 orientation: 441. Written once for any size instead of
 // expansions written out.
 //
@@ -234,7 +235,8 @@ struct ColumnSets {
   }
 };
 
-// Level M from level M - 1, along row `row` (with kLift, `lift` is its entry in column C - 1).
+// Level M (rows 0 .. M - 1) from level M - 1, along row M - 1, `row` (with kLift, `lift` is its
+// entry in column C - 1): the sign of column j is (-1)^(M - 1 + its position in the set).
 template <int C, int M, bool kLift>
 void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<C, M - 1, kLift>& below, MinorLevel<C, M, kLift>& out) {
   constexpr int L = minor_limbs(M, kLift);
@@ -248,19 +250,19 @@ void next_minors(const std::int64_t* row, Int128 lift, const MinorLevel<C, M - 1
       const auto& minor = below[mask & ~(1u << j)];
       const Wide<L> term =
           kLift && j == C - 1 ? resize<L>(Wide<2>::from(lift) * minor) : resize<L>(Wide<1>::from(row[j]) * minor);
-      sum = (position & 1) ? sum - term : sum + term;
+      sum = ((M - 1 + position) & 1) ? sum - term : sum + term;
       ++position;
     }
     out[mask] = sum;
   }
 }
 
-// Levels M .. R of the table of rows 0 .. R - 1 (level m over the last m rows), from level
+// Levels M .. R of the table of rows 0 .. R - 1 (level m over the first m rows), from level
 // M - 1; level R into `out`.
 template <int C, int R, int M, bool kLift>
 void next_levels(const std::int64_t (*x)[kMaxColumns], const Int128* lift, const MinorLevel<C, M - 1, kLift>& below,
                  MinorLevel<C, R, kLift>& out) {
-  const int row = R - M;
+  const int row = M - 1;
   const Int128 entry = kLift ? lift[row] : 0;
   if constexpr (M == R) {
     next_minors<C, M, kLift>(x[row], entry, below, out);
@@ -278,7 +280,7 @@ void table_of_minors(const std::int64_t (*x)[kMaxColumns], const Int128* lift, M
   MinorLevel<C, 1, kLift> one;
   using Entry = Wide<minor_limbs(1, kLift)>;
   for (int j = 0; j < C; ++j)
-    one[1u << j] = kLift && j == C - 1 ? Entry::from(lift[R - 1]) : Entry::from(x[R - 1][j]);
+    one[1u << j] = kLift && j == C - 1 ? Entry::from(lift[0]) : Entry::from(x[0][j]);
   next_levels<C, R, 2, kLift>(x, lift, one, out);
 }
 
@@ -288,6 +290,17 @@ Wide<minor_limbs(7, false)> spatial7(const std::int64_t (*x)[kMaxColumns]) {
   MinorLevel<7, 7, false> minors;
   table_of_minors<7, 7, false>(x, nullptr, minors);
   return minors[0x7f];
+}
+
+// The cofactors of x's row, the last of D + 1, from the D x D minors of the rows above it (a
+// table's level D over D + 1 columns, the lift last): the cofactor of column c has the sign
+// (-1)^(D + c), + at the lift (column D), and is the minor without that column.
+template <int D, int L>
+void cofactors_from(const MinorLevel<D + 1, D, true>& minors, Wide<L> (&spatial)[D], Wide<L>& lift_cofactor) {
+  static_assert(L == minor_limbs(D), "the table's top level");
+  constexpr unsigned kAll = (1u << (D + 1)) - 1;
+  for (int c = 0; c < D; ++c) spatial[c] = ((D + c) & 1) ? -minors[kAll & ~(1u << c)] : minors[kAll & ~(1u << c)];
+  lift_cofactor = minors[kAll & ~(1u << D)];
 }
 
 }  // namespace
@@ -385,7 +398,58 @@ bool WideLiftedCofactors::prepare(const Frame& f, const double* const* points) {
 }
 
 template <int D>
+bool WideLiftedCofactors::prepare_from_facet(const Frame& f, const double* const* points) {
+  MinorLevel<D + 1, D - 1, true>& facet = [this]() -> MinorLevel<D + 1, D - 1, true>& {
+    if constexpr (D == 7) return facet7_;
+    else return facet6_;
+  }();
+  // The facet's base and rows by value (a caller may reuse a row's memory for other points).
+  const auto row_of = [&](int r) { return r == 0 ? f.base : points[r - 1]; };
+  bool same = facet_dim_ == D;
+  for (int r = 0; same && r < D; ++r)
+    for (int c = 0; c < D; ++c) same = same && facet_key_[r][c] == row_of(r)[c];
+  if (!same) {
+    facet_dim_ = D;
+    for (int r = 0; r < D; ++r)
+      for (int c = 0; c < D; ++c) facet_key_[r][c] = row_of(r)[c];
+    CommonUnit unit;
+    for (int c = 0; c < D; ++c) {
+      unit.include(f.base[c]);
+      for (int r = 0; r + 1 < D; ++r) unit.include(points[r][c]);
+    }
+    facet_unit_ = unit.unit();
+    facet_inverse_ = unit.inverse();
+    std::int64_t x[kMaxColumns][kMaxColumns];
+    Int128 lift[kMaxColumns];
+    facet_fits_ = facet_inverse_ != 0.0 && lifted_rows(f, facet_inverse_, points, D - 1, x, lift);
+    if (facet_fits_) table_of_minors<D + 1, D - 1, true>(x, lift, facet);
+  }
+  if (!facet_fits_) return false;
+  // The candidate, row D - 1, in the facet's unit: the table's top level along its row.
+  const double* p = points[D - 1];
+  CommonUnit unit;
+  for (int c = 0; c < D; ++c) unit.include(p[c]);
+  if (unit.unit() < facet_unit_) return false;
+  std::int64_t row[kMaxColumns];
+  Int128 lift = 0;
+  for (int c = 0; c < D; ++c) {
+    if (!difference(p[c], f.base[c], facet_inverse_, row[c])) return false;
+    lift += product(row[c], row[c]);
+  }
+  unit_ = facet_unit_;
+  inverse_ = facet_inverse_;
+  for (int c = 0; c < D; ++c) base_[c] = f.base[c];
+  MinorLevel<D + 1, D, true> minors;
+  next_minors<D + 1, D, true>(row, lift, facet, minors);
+  if constexpr (D == 7) cofactors_from<7>(minors, spatial7_, lift7_);
+  else cofactors_from<6>(minors, spatial6_, lift6_);
+  return true;
+}
+
+template <int D>
 bool WideLiftedCofactors::prepare_fixed(const Frame& f, const double* const* points) {
+  if constexpr (D >= 6)
+    if (prepare_from_facet<D>(f, points)) return true;
   CommonUnit unit;
   for (int c = 0; c < D; ++c) {
     unit.include(f.base[c]);
@@ -425,14 +489,9 @@ bool WideLiftedCofactors::prepare_fixed(const Frame& f, const double* const* poi
 template <int D, int L>
 void WideLiftedCofactors::table_cofactors(const std::int64_t (*x)[kMaxDim], const Int128* lift, Wide<L> (&spatial)[D],
                                           Wide<L>& lift_cofactor) {
-  static_assert(L == minor_limbs(D), "the table's top level");
-  // x's row is the last of D + 1: the cofactor of column c has the sign (-1)^(D + c), + at the
-  // lift (column D); each is the minor of rows 0 .. D - 1 without that column.
-  constexpr unsigned kAll = (1u << (D + 1)) - 1;
   MinorLevel<D + 1, D, true> minors;
   table_of_minors<D + 1, D, true>(x, lift, minors);
-  for (int c = 0; c < D; ++c) spatial[c] = ((D + c) & 1) ? -minors[kAll & ~(1u << c)] : minors[kAll & ~(1u << c)];
-  lift_cofactor = minors[kAll & ~(1u << D)];
+  cofactors_from<D>(minors, spatial, lift_cofactor);
 }
 
 void WideLiftedCofactors::prepare4(const std::int64_t (*x)[kMaxDim], const Int128* lift) {

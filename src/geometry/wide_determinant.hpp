@@ -50,6 +50,11 @@ class WideLiftedCofactors {
   // 6D and 7D: from a table of minors over column sets.
   template <int D, int L>
   static void table_cofactors(const std::int64_t (*x)[kMaxDim], const Int128* lift, Wide<L> (&spatial)[D], Wide<L>& lift_cofactor);
+  // The same from the facet's levels (the first dim - 1 rows), kept for the next candidate of the
+  // same facet; false where the candidate needs a finer unit than the facet's rows (then the
+  // whole table is computed in the common unit).
+  template <int D>
+  bool prepare_from_facet(const Frame& frame, const double* const* points);
   void prepare4(const std::int64_t (*x)[kMaxDim], const Int128* lift);
   void prepare5(const std::int64_t (*x)[kMaxDim], const Int128* lift);
   template <int D>
@@ -73,6 +78,16 @@ class WideLiftedCofactors {
   // In 7D below 2^511.1 and 2^446.3.
   Wide<9> spatial7_[7] = {};
   Wide<9> lift7_ = {};
+  // prepare_from_facet's facet: its base and rows' coordinates, unit, and the table's level
+  // dim - 1 over its rows (uninitialised: large, and read only once written). facet_dim_ 0:
+  // none yet.
+  int facet_dim_ = 0;
+  double facet_key_[kMaxDim][kMaxDim] = {};
+  bool facet_fits_ = false;
+  int facet_unit_ = 0;
+  double facet_inverse_ = 1.0;
+  Wide<7> facet7_[1 << 8];  // 7D: the 6 x 6 minors over 8 columns
+  Wide<6> facet6_[1 << 7];  // 6D: the 5 x 5 minors over 7 columns
 };
 
 // wide_orientation in 6D and 7D for many last points x against the same first dim - 1 rows (a
