@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""bench/degenerate_families.py: writes the eighteenth to twenty-fifth rounds' probe inputs
-(bench/RESULTS.md, "The eighteenth round" to "The twenty-fifth round"): 20 000 points each
-(5 000 for two_spheres4, 10 000 and 3 125 for the 4D and 5D decimal grids) on curved sets
+"""bench/degenerate_families.py: writes the eighteenth to twenty-sixth rounds' probe inputs
+(bench/RESULTS.md, "The eighteenth round" to "The twenty-sixth round"): 20 000 points each
+(5 000 for two_spheres4; 10 000, 3 125, 729 and 1 458 for the 4D to 7D decimal grids) on curved sets
 that are not one input sphere, a terrain with a flat plateau, where the direct search is
 weak, and decimal grids and rounded points, whose ties need the exact stages, in Qhull's
 format, into a directory.
@@ -10,10 +10,11 @@ format, into a directory.
 
 `bench/run.sh --degenerate` writes them into bench/data/families and runs each against CGAL
 and Qhull (one table); by hand, per file: drange delaunay DIR/NAME.txt -o /dev/null --stats
---threads 1, and build-bench/bench/drange_bench_run --peer cgal3 (cgal2 in 2D, cgal-dd in 4D
-and 5D, qhull) --input DIR/NAME.txt. The points come from Python's random module with a fixed
+--threads 1, and build-bench/bench/drange_bench_run --peer cgal3 (cgal2 in 2D, cgal-dd from 4D,
+qhull) --input DIR/NAME.txt. The points come from Python's random module with a fixed
 seed: the same files on every run.
 """
+import itertools
 import math
 import os
 import random
@@ -94,6 +95,10 @@ def families(rng):
                             for k in range(10) for m in range(10)]
     yield "decimal_grid5", [[0.1 * i, 0.1 * j, 0.1 * k, 0.1 * m, 0.1 * q] for i in range(5) for j in range(5)
                             for k in range(5) for m in range(5) for q in range(5)]
+    # The twenty-sixth round's, in 6D and 7D, whose ties took the fixed-width stage (6D) or GMP
+    # (7D): {0, .1, .2}^6 and {0, .1, .2}^6 x {0, .1}.
+    yield "decimal_grid6", [[0.1 * x for x in p] for p in itertools.product(range(3), repeat=6)]
+    yield "decimal_grid7", [[0.1 * x for x in p + (z,)] for p in itertools.product(range(3), repeat=6) for z in range(2)]
 
 
 def main():

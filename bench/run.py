@@ -67,8 +67,10 @@ DEGENERATE = [("family:" + name, n, d) for name, n, d in [
     ("cylinder_rings", 20000, 3), ("circle_in_3d", 20002, 3), ("cylinder", 20000, 3), ("torus", 20000, 3),
     ("hemisphere", 20000, 3), ("sphere_in_ball", 20000, 3), ("two_spheres4", 5000, 4), ("plateau", 20000, 3),
     ("decimal_grid3", 19683, 3), ("decimal_grid2", 20000, 2), ("rounded3", 20000, 3),
-    ("rounded3_dense", 100000, 3), ("rounded4", 20000, 4), ("decimal_grid4", 10000, 4), ("decimal_grid5", 3125, 5)]]
-DEGENERATE_PEERS = {2: ["cgal2", "qhull"], 3: ["cgal3", "qhull"], 4: ["cgal-dd", "qhull"], 5: ["cgal-dd", "qhull"]}
+    ("rounded3_dense", 100000, 3), ("rounded4", 20000, 4), ("decimal_grid4", 10000, 4), ("decimal_grid5", 3125, 5),
+    ("decimal_grid6", 729, 6), ("decimal_grid7", 1458, 7)]]
+DEGENERATE_PEERS = {2: ["cgal2", "qhull"], 3: ["cgal3", "qhull"], 4: ["cgal-dd", "qhull"], 5: ["cgal-dd", "qhull"],
+                    6: ["cgal-dd", "qhull"], 7: ["cgal-dd", "qhull"]}
 QUICK = [("uniform", 100000, 2), ("grid", 90000, 2), ("uniform", 100000, 3), ("uniform", 10000, 4), ("uniform", 3000, 5)]
 # Ablation: (distribution, n, d, variants).
 ABLATION = [
