@@ -205,9 +205,9 @@ Wide<6> spatial6(const std::int64_t (*x)[kMaxColumns]) {
 // orientation: the m x m minors of the first m of the rows, for every set of m of the C columns
 // (with kLift, the last column is the rows' lift), each along its last row from the
 // (m - 1) x (m - 1) minors below it (Laplace), for m = 1 .. the row count. (First rows first: a
-// facet's levels then serve each of its candidates, whose row comes last.) 6D lifted: 441
-// products; 7D lifted: 1 008; 7 x 7 orientation: 441. Written once for any size instead of
-// expansions written out.
+// facet's levels then serve each of its candidates, whose row comes last.) Products, levels 2
+// and up: 6D lifted 434, 7D lifted 1 008, the 7 x 7 orientation 441. Written once for any size
+// instead of expansions written out.
 //
 // The limbs of an m x m minor: m! terms of m entries, each below 2^62 but for one lift where
 // the table has a lift column (below 2^126.9 up to 7D: 7 squares below 2^124), plus a sign bit.
