@@ -13,7 +13,7 @@
 #   --beyond     7D 4 500 and 9 000 points, 8D 1 500 and 2 000, 600 s limit (about 70 min)
 #                                                           -> bench/results-beyond.md
 #   --degenerate the probe inputs of bench/degenerate_families.py (concentric spheres, bubbles,
-#                rings, smooth surfaces, a terrain's plateau) against CGAL and Qhull (about 10 min)
+#                rings, smooth surfaces, a terrain's plateau, decimal grids) against CGAL and Qhull (about 11 min)
 #                                                           -> bench/results-degenerate.md
 #   --micro      also run the Google Benchmark microbenchmarks (appended to the file)
 #   --repeat N   each measurement N times, the median reported (the machine's noise: one run
