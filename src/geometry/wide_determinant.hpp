@@ -9,10 +9,11 @@
 // the formula fixes: 64-bit differences, 128-bit 2 x 2 minors and lifts, 192 to 640 bits above
 // them (up to the 8 x 8 lifted determinant of 7D; the 6D and 7D lifted cofactors and the 7 x 7
 // orientation come from a table of minors over column sets, the rest from expansions written
-// out). 8D stays with GMP: its lifts, 8 squares below 2^124, would not fit 128 bits. That needs each difference from the base
-// point below 2^62 in the common unit (the points of a determinant are near each other: 0.01 k
-// near 5 differ by about 2^55 units of 0.01's last bit), and 2^-unit a normal double. The
-// signs are exact: tests/wide_determinant_test.cpp checks them against GMP's.
+// out). 8D stays with GMP: its lifts, 8 squares below 2^124, would not fit 128 bits. That
+// needs each difference from the base point below 2^62 in the common unit (the points of a
+// determinant are near each other: 0.01 k near 5 differ by about 2^55 units of 0.01's last
+// bit), and 2^-unit a normal double. The signs are exact: tests/wide_determinant_test.cpp
+// checks them against GMP's.
 #pragma once
 
 #include <optional>
