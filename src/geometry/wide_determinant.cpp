@@ -401,7 +401,8 @@ template <int D>
 bool WideLiftedCofactors::prepare_from_facet(const Frame& f, const double* const* points) {
   MinorLevel<D + 1, D - 1, true>& facet = [this]() -> MinorLevel<D + 1, D - 1, true>& {
     if constexpr (D == 7) return facet7_;
-    else return facet6_;
+    else if constexpr (D == 6) return facet6_;
+    else return facet5_;
   }();
   // The facet's base and rows by value (a caller may reuse a row's memory for other points).
   const auto row_of = [&](int r) { return r == 0 ? f.base : points[r - 1]; };
@@ -442,13 +443,14 @@ bool WideLiftedCofactors::prepare_from_facet(const Frame& f, const double* const
   MinorLevel<D + 1, D, true> minors;
   next_minors<D + 1, D, true>(row, lift, facet, minors);
   if constexpr (D == 7) cofactors_from<7>(minors, spatial7_, lift7_);
-  else cofactors_from<6>(minors, spatial6_, lift6_);
+  else if constexpr (D == 6) cofactors_from<6>(minors, spatial6_, lift6_);
+  else cofactors_from<5>(minors, spatial5_, lift5_);
   return true;
 }
 
 template <int D>
 bool WideLiftedCofactors::prepare_fixed(const Frame& f, const double* const* points) {
-  if constexpr (D >= 6)
+  if constexpr (D >= 5)
     if (prepare_from_facet<D>(f, points)) return true;
   CommonUnit unit;
   for (int c = 0; c < D; ++c) {
@@ -572,7 +574,7 @@ void WideLiftedCofactors::prepare5(const std::int64_t (*x)[kMaxDim], const Int12
     }
     spatial5_[c] = (c & 1) ? minor : -minor;
   }
-  lift5_ = laplace5(top, bottom);  // the spatial determinant of rows 0 .. 4
+  lift5_ = resize<6>(laplace5(top, bottom));  // the spatial determinant of rows 0 .. 4
 }
 
 std::optional<int> WideLiftedCofactors::sign_with(const double* point) const {

@@ -51,9 +51,9 @@ class WideLiftedCofactors {
   // 6D and 7D: from a table of minors over column sets.
   template <int D, int L>
   static void table_cofactors(const std::int64_t (*x)[kMaxDim], const Int128* lift, Wide<L> (&spatial)[D], Wide<L>& lift_cofactor);
-  // The same from the facet's levels (the first dim - 1 rows), kept for the next candidate of the
-  // same facet; false where the candidate needs a finer unit than the facet's rows (then the
-  // whole table is computed in the common unit).
+  // 5D to 7D: the same from the facet's levels (the first dim - 1 rows), kept for the next
+  // candidate of the same facet; false where the candidate needs a finer unit than the facet's
+  // rows (then the whole table, or prepare5, in the common unit).
   template <int D>
   bool prepare_from_facet(const Frame& frame, const double* const* points);
   void prepare4(const std::int64_t (*x)[kMaxDim], const Int128* lift);
@@ -73,7 +73,7 @@ class WideLiftedCofactors {
   Wide<4> lift4_ = {};
   // In 5D below 2^382 and 2^318; in 6D below 2^446.1 and 2^381.5.
   Wide<6> spatial5_[5] = {};
-  Wide<5> lift5_ = {};
+  Wide<6> lift5_ = {};  // in 6 limbs as spatial5_, so that a table's level fills both
   Wide<7> spatial6_[6] = {};
   Wide<7> lift6_ = {};
   // In 7D below 2^511.1 and 2^446.3.
@@ -89,6 +89,7 @@ class WideLiftedCofactors {
   double facet_inverse_ = 1.0;
   Wide<7> facet7_[1 << 8];  // 7D: the 6 x 6 minors over 8 columns
   Wide<6> facet6_[1 << 7];  // 6D: the 5 x 5 minors over 7 columns
+  Wide<5> facet5_[1 << 6];  // 5D: the 4 x 4 minors over 6 columns
 };
 
 // wide_orientation in 6D and 7D for many last points x against the same first dim - 1 rows (a
