@@ -349,6 +349,48 @@ TEST(PredicateTest, TieSignWithTheOpenSideKnownAgrees) {
   EXPECT_GT(told, 200) << "the last two points should often be the most perturbed";
 }
 
+// In 6D and 7D lifted_tie_sign takes its orientations from cofactors cached per set of rows
+// (indexed by their addresses, checked by their coordinates): ties of a decimal box's corners
+// (all on one sphere; no filter decides them), each round's points written into the same
+// buffers, and within a round the last point varied (the cached rows repeat), against the
+// perturbation's definition.
+TEST(PredicateTest, TieSignFromCachedOrientationsIn6DAnd7D) {
+  for (int d = 6; d <= 7; ++d) {
+    TestRandom random(static_cast<std::uint64_t>(d) * 31);
+    std::vector<std::vector<double>> buffers(static_cast<std::size_t>(d + 2), std::vector<double>(static_cast<std::size_t>(d)));
+    std::vector<const double*> all;
+    for (const auto& b : buffers) all.push_back(b.data());
+    const auto corner = [&](std::vector<double>& out) {
+      for (double& x : out) x = random.uniform() < 0.5 ? 0.3 : 0.7;
+    };
+    int checked = 0;
+    for (int round = 0; round < 60; ++round) {
+      for (auto& b : buffers) corner(b);
+      for (int last = 0; last < 8; ++last) {
+        corner(buffers.back());
+        bool distinct = true, spans = false;
+        for (int i = 0; i < d + 2; ++i)
+          for (int j = i + 1; j < d + 2; ++j)
+            if (buffers[static_cast<std::size_t>(i)] == buffers[static_cast<std::size_t>(j)]) distinct = false;
+        for (int skip = 0; skip < d + 2 && !spans && distinct; ++skip) {
+          std::vector<const double*> simplex;
+          for (int i = 0; i < d + 2; ++i)
+            if (i != skip) simplex.push_back(all[static_cast<std::size_t>(i)]);
+          spans = reference_orientation(d, simplex) != 0;
+        }
+        if (!distinct || !spans) continue;
+        const std::vector<std::int64_t> ranks = ranks_for(all.size(), static_cast<std::uint64_t>(round * 8 + last + 1));
+        const Frame frame{d, d, nullptr, all[0]};
+        const std::vector<const double*> rest(all.begin() + 1, all.end());
+        SCOPED_TRACE("d=" + std::to_string(d) + " round=" + std::to_string(round) + " last=" + std::to_string(last));
+        ASSERT_EQ(geometry::lifted_tie_sign(frame, all.data() + 1, ranks.data()), reference_lifted_sign_perturbed(d, all[0], rest, ranks));
+        ++checked;
+      }
+    }
+    EXPECT_GT(checked, 100) << "d=" << d;
+  }
+}
+
 // The exactness proofs read exponents from the bits: against frexp on normal, subnormal and
 // negative values, and the limits against ldexp over the whole normal range.
 TEST(ErrorBound, LowestBitExponentAndPowerOfTwoLimitMatchTheLibrary) {
