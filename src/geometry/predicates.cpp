@@ -312,14 +312,6 @@ std::optional<int> fixed_orientation(const Frame& f, const double* const* points
 
 }  // namespace
 
-// The sign that the symbolic perturbation gives a lifted determinant that is exactly zero.
-// The relative determinant I equals (-1)^(k+1) det M, where M has the homogeneous rows
-// [x_i, |x_i|^2, 1] of (base, p_1, ..., p_{k+1}). Perturbing the lifts by eps_i makes
-// det M(eps) = det M + sum_i eps_i (-1)^(i+k) H_i, with H_i the homogeneous orientation of the
-// other k+1 points. det M = 0 here, so the most perturbed point whose H_i is nonzero decides:
-// sign I(eps) = -(-1)^i (-1)^k sign(orientation of the others, based at the first of them).
-// The points are taken by decreasing rank without sorting, and the others live on the stack
-// up to kInlinePoints: grids reach this once per tie.
 namespace {
 // lifted_tie_sign's orientations in 6D and 7D, each with the k - 1 rows and base it shares with
 // many others (a tie's facet and candidate, all but the point left out and the tested point):
@@ -373,6 +365,14 @@ std::optional<int> tie_orientation(const Frame& g, const double* const* points) 
 }
 }  // namespace
 
+// The sign that the symbolic perturbation gives a lifted determinant that is exactly zero.
+// The relative determinant I equals (-1)^(k+1) det M, where M has the homogeneous rows
+// [x_i, |x_i|^2, 1] of (base, p_1, ..., p_{k+1}). Perturbing the lifts by eps_i makes
+// det M(eps) = det M + sum_i eps_i (-1)^(i+k) H_i, with H_i the homogeneous orientation of the
+// other k+1 points. det M = 0 here, so the most perturbed point whose H_i is nonzero decides:
+// sign I(eps) = -(-1)^i (-1)^k sign(orientation of the others, based at the first of them).
+// The points are taken by decreasing rank without sorting, and the others live on the stack
+// up to kInlinePoints: grids reach this once per tie.
 int lifted_tie_sign(const Frame& f, const double* const* points, const std::int64_t* ranks, int known) {
   constexpr int kInlinePoints = 16;
   const int count = f.k + 2;

@@ -7,13 +7,13 @@
 // Bareiss' exact divisions. Here the same exact value (every coordinate an integer in the
 // points' common unit, as in exact_matrix.hpp) is expanded by minors in integers whose widths
 // the formula fixes: 64-bit differences, 128-bit 2 x 2 minors and lifts, 192 to 640 bits above
-// them (up to the 8 x 8 lifted determinant of 7D; the 6D and 7D lifted cofactors and the 7 x 7
-// orientation come from a table of minors over column sets, the rest from expansions written
-// out). 8D stays with GMP: its lifts, 8 squares below 2^124, would not fit 128 bits. That
-// needs each difference from the base point below 2^62 in the common unit (the points of a
-// determinant are near each other: 0.01 k near 5 differ by about 2^55 units of 0.01's last
-// bit), and 2^-unit a normal double. The signs are exact: tests/wide_determinant_test.cpp
-// checks them against GMP's.
+// them (up to the 8 x 8 lifted determinant of 7D; the 5D to 7D lifted cofactors and the 6D and
+// 7D orientation cofactors come from tables of minors over column sets, the rest from
+// expansions written out). 8D stays with GMP: its lifts, 8 squares below 2^124, would not fit
+// 128 bits. That needs each difference from the base point below 2^62 in the common unit (the
+// points of a determinant are near each other: 0.01 k near 5 differ by about 2^55 units of
+// 0.01's last bit), and 2^-unit a normal double. The signs are exact:
+// tests/wide_determinant_test.cpp checks them against GMP's.
 #pragma once
 
 #include <optional>
@@ -95,8 +95,8 @@ class WideLiftedCofactors {
 // wide_orientation in 6D and 7D for many last points x against the same first dim - 1 rows (a
 // facet's hyperplane, tested against each point that its filters leave, which on a grid's
 // hyperplanes are many): the cofactors along x's row computed once, from a table of minors,
-// then each x is a dot product. (The perturbation's orientations, each of its own rows, keep
-// wide_orientation.)
+// then each x is a dot product. (The perturbation's orientations share rows too: predicates.cpp
+// keeps their cofactors in a small cache.)
 class WideOrientationCofactors {
  public:
   static constexpr int kMinDim = 6, kMaxDim = 7;
