@@ -600,6 +600,28 @@ TEST(DelaunayVariants, PlateauFacetsPruneTheirFlatSide) {
   }
 }
 
+TEST(DelaunayVariants, LongSearchesOnACylinderPruneTheClosedSide) {
+  // Points on a cylinder: most Delaunay balls are centred near its axis and touch the surface
+  // along a whole circle, so a search meets many kd-tree nodes, and whole subtrees near the
+  // circle lie on the facet's closed side. After its first 32 inner nodes, a search with a
+  // ball prunes them too.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> angle(0.0, 6.283185307179586), height(-1.0, 1.0);
+  PointCloud cylinder{3, {}};
+  for (int i = 0; i < 10000; ++i) {
+    const double t = angle(rng);
+    cylinder.coords.insert(cylinder.coords.end(), {std::cos(t), std::sin(t), height(rng)});
+  }
+  const Triangulation t = drange::delaunay(cylinder);
+  expect_valid(cylinder, t, "cylinder");
+  drange::Options no_prune;
+  no_prune.search = drange::search_variant("no-prune");
+  EXPECT_EQ(canonical(t), canonical(drange::delaunay(cylinder, no_prune)));
+  // Nodes entered per simplex (a deterministic work counter, not a time): 117 with the closed
+  // side pruned only before the first ball, 93 with it pruned in long searches too (2026-11-27).
+  EXPECT_LT(t.stats.calls_per_simplex(), 105.0);
+}
+
 TEST(DelaunayVariants, CandidatesOnADecimalLatticePlaneGetABall) {
   // Points rounded to multiples of 0.04, a CSV file's kind of coordinates: four of them on one
   // lattice plane and one circle are within rounding of both in binary, so the candidate's

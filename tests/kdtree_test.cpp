@@ -47,7 +47,7 @@ class BoxVisitor {
       : points_(points), dim_(dim), lo_(std::move(lo)), hi_(std::move(hi)), shrink_(shrink) {}
   const double* query_lower() const { return lo_.data(); }
   const double* query_upper() const { return hi_.data(); }
-  bool prune(std::int32_t) const { return false; }
+  bool prune(std::int32_t, bool) const { return false; }
   bool right_first(const KdTree::Node&) const { return false; }
   void leaf(std::int32_t node, std::int32_t begin, std::int32_t end) {
     leaves.push_back({node, begin, end});

@@ -194,7 +194,7 @@ class OuterPointSearch {
   bool right_first(const spatial::KdTree::Node& node) const {
     return near_[static_cast<std::size_t>(node.split_axis)] > node.split_value;
   }
-  bool prune(std::int32_t node) const {
+  bool prune(std::int32_t node, bool) const {
     return found_ >= 0 || !plane_.box_may_reach(tree_.lower(node), tree_.upper(node), outer_);
   }
   void leaf(std::int32_t /*node*/, std::int32_t begin, std::int32_t end) {

@@ -56,7 +56,7 @@ class NearestVisitor {
         upper_(static_cast<std::size_t>(d), std::numeric_limits<double>::infinity()) {}
   const double* query_lower() const { return lower_.data(); }
   const double* query_upper() const { return upper_.data(); }
-  bool prune(std::int32_t) const { return false; }
+  bool prune(std::int32_t, bool) const { return false; }
   bool right_first(const spatial::KdTree::Node& node) const { return q_[node.split_axis] > node.split_value; }
   void leaf(std::int32_t /*node*/, std::int32_t begin, std::int32_t end) {
     for (std::int32_t pos = begin; pos < end; ++pos) {

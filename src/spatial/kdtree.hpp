@@ -66,7 +66,7 @@ class KdTree {
 
   // Visits the nodes whose box meets the query box, depth first. Visitor interface:
   //   const double* query_lower(), query_upper()   the current query box (may shrink)
-  //   bool prune(std::int32_t node)                 true: skip the node and its subtree
+  //   bool prune(std::int32_t node, bool leaf)      true: skip the node (a leaf or not) and its subtree
   //   bool right_first(const Node& node)            which child to enter first
   //   void leaf(std::int32_t node, std::int32_t begin, std::int32_t end)
   //                                                 scan the points [begin, end) of leaf `node`
@@ -153,8 +153,8 @@ std::uint64_t KdTree::walk(Visitor& visitor, std::int32_t root) const {
     const std::int32_t i = stack[--top];
     if (!meets<D>(i, visitor.query_lower(), visitor.query_upper())) continue;
     ++calls;
-    if (visitor.prune(i)) continue;
     const Node& node = nodes_[static_cast<std::size_t>(i)];
+    if (visitor.prune(i, node.right < 0)) continue;
     if (node.right < 0) {
       visitor.leaf(i, node.begin, node.end);
       continue;
