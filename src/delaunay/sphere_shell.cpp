@@ -475,13 +475,15 @@ void fit_clusters(const std::vector<spatial::KdTree::Node>& nodes, const std::ve
 }
 
 // The nodes' cones, the blocks and their cones, and the blocks' points by offset: each about
-// its sphere's centre, for the nodes and leaves in a sphere (SphereShell::node_sphere).
+// its sphere's centre, for the nodes and leaves in a sphere (SphereShell::node_sphere); with one
+// sphere, every node's cone about its centre (the points off it too).
 void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spatial::KdTree::Node>& nodes, SphereShell& shell) {
   const auto d = static_cast<std::size_t>(dim);
   const std::size_t n = shell.offset.size(), stride = d + 4;
+  const bool one_sphere = shell.spheres() == 1;
   std::vector<double> unit(n * d, 0.0), radius(n, 0.0);
   for (std::size_t id = 0; id < n; ++id) {
-    const std::int32_t k = shell.point_sphere[id];
+    const std::int32_t k = shell.point_sphere[id] < 0 && one_sphere ? 0 : shell.point_sphere[id];
     if (k < 0) continue;
     const double* g = shell.sphere(k).centre;
     double r2 = 0.0;
@@ -501,7 +503,7 @@ void fit_cones_and_blocks(const double* coords, int dim, const std::vector<spati
   for (std::size_t i = nodes.size(); i-- > 0;) {
     const spatial::KdTree::Node& node = nodes[i];
     double* cone = &shell.cone[i * stride];
-    if (shell.node_sphere[i] < 0) {
+    if (shell.node_sphere[i] < 0 && !one_sphere) {
       cone[d] = -2.0;
       continue;
     }

@@ -71,7 +71,9 @@ struct SphereShell {
   // axis m, then cos_lo (every point's exact direction y / |y|, y = x - g, has m . y >= cos_lo
   // |y|), sin_hi (at least sqrt(1 - cos_lo^2), with a margin for m's rounding), and r_lo <= |y|
   // <= r_hi. cos_lo is -2 where no such cone is narrower than a half-space (or a point is at
-  // g), and for a node in no sphere. On a sphere the node's points lie on an arc or a cap,
+  // g), and for a node in no sphere, unless the shell has one sphere: then every node has a
+  // cone about its centre, over its points off the sphere too (the closed side's proof uses
+  // those: facet_search.cpp, cone_on_closed_side). On a sphere the node's points lie on an arc or a cap,
   // which its box bounds loosely: the cone bounds the form's linear term over them tightly
   // (facet_search.cpp, cone_linear_low).
   std::vector<double> cone;
