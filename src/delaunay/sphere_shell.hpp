@@ -73,9 +73,9 @@ struct SphereShell {
   // <= r_hi. cos_lo is -2 where no such cone is narrower than a half-space (or a point is at
   // g), and for a node in no sphere, unless the shell has one sphere: then every node has a
   // cone about its centre, over its points off the sphere too (the closed side's proof uses
-  // those: facet_search.cpp, cone_on_closed_side). On a sphere the node's points lie on an arc or a cap,
-  // which its box bounds loosely: the cone bounds the form's linear term over them tightly
-  // (facet_search.cpp, cone_linear_low).
+  // those: facet_search.cpp, cone_on_closed_side). On a sphere the node's points lie on an
+  // arc or a cap, which its box bounds loosely: the cone bounds the form's linear term over
+  // them tightly (facet_search.cpp, cone_linear_low).
   std::vector<double> cone;
   // Each leaf cut into runs of points in one sphere (or in none), and each run into blocks the
   // way the build orders its points (halving down to 8 points in 3D, 32 from 4D, the whole
