@@ -1104,9 +1104,9 @@ bool SearchKernel<D>::beats_candidate(std::int32_t id) {
     rows_[static_cast<std::size_t>(d)] = points_.point(id);
     // The ranks only the symbolic perturbation reads, looked up here: the filter decides
     // nearly every test, and the rank array is one more that each candidate would touch.
-    for (int i = 0; i < d; ++i) ranks_[static_cast<std::size_t>(i)] = points_.rank[static_cast<std::size_t>(facet_[i])];
-    ranks_[static_cast<std::size_t>(d)] = points_.rank[static_cast<std::size_t>(candidate_)];
-    ranks_[static_cast<std::size_t>(d + 1)] = points_.rank[static_cast<std::size_t>(id)];
+    for (int i = 0; i < d; ++i) ranks_[static_cast<std::size_t>(i)] = points_.rank(facet_[i]);
+    ranks_[static_cast<std::size_t>(d)] = points_.rank(candidate_);
+    ranks_[static_cast<std::size_t>(d + 1)] = points_.rank(id);
     const geometry::Frame frame{d, d, nullptr, f0_};
     // I(p, x) has d + 2 units (d spatial columns, the lift twice). Exact and zero: a tie
     // (cospherical points, as in every cell of a grid), which only the perturbation breaks.

@@ -358,7 +358,7 @@ Ids Wrapper::simplex_in_flat(const Ids& ids, const Axes& axes) {
   rows.push_back(-1);
   std::vector<const double*> lifted(static_cast<std::size_t>(k + 1));
   std::vector<std::int64_t> ranks(static_cast<std::size_t>(k + 2));
-  for (int i = 0; i < k; ++i) ranks[static_cast<std::size_t>(i)] = points_.rank[static_cast<std::size_t>(simplex[static_cast<std::size_t>(i)])];
+  for (int i = 0; i < k; ++i) ranks[static_cast<std::size_t>(i)] = points_.rank(simplex[static_cast<std::size_t>(i)]);
   for (int i = 1; i < k; ++i) lifted[static_cast<std::size_t>(i - 1)] = points_.point(simplex[static_cast<std::size_t>(i)]);
   const geometry::Frame frame{d_, k, axes.data(), points_.point(simplex[0])};
   int sigma = 0;
@@ -374,8 +374,8 @@ Ids Wrapper::simplex_in_flat(const Ids& ids, const Axes& axes) {
     }
     lifted[static_cast<std::size_t>(k - 1)] = points_.point(apex);
     lifted[static_cast<std::size_t>(k)] = points_.point(x);
-    ranks[static_cast<std::size_t>(k)] = points_.rank[static_cast<std::size_t>(apex)];
-    ranks[static_cast<std::size_t>(k + 1)] = points_.rank[static_cast<std::size_t>(x)];
+    ranks[static_cast<std::size_t>(k)] = points_.rank(apex);
+    ranks[static_cast<std::size_t>(k + 1)] = points_.rank(x);
     if (sigma * geometry::lifted_sign_perturbed(frame, lifted.data(), ranks.data()) < 0) apex = x;
   }
   if (apex < 0) throw InternalError("first facet: a flat without a point off its facet");

@@ -211,15 +211,11 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   store.coords = std::move(by_rank);  // now in tree order
   store.blocks = LeafBlocks(store.tree, store.coords.data(), d, team);
   store.shell = fit_sphere_shell(store.coords.data(), store.size, d, store.tree);
-  const auto& order = store.tree.order();
-  store.rank.resize(kept);
+  const auto& order = store.tree.order();  // the rank of each id (PointStore::rank)
   store.input_index.resize(kept);
   for_ranges(order.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {
-    for (std::size_t id = begin; id < end; ++id) {
-      const auto r = static_cast<std::size_t>(order[id]);
-      store.rank[id] = static_cast<std::int64_t>(r);
-      store.input_index[id] = distinct.index[r];
-    }
+    for (std::size_t id = begin; id < end; ++id)
+      store.input_index[id] = static_cast<std::int32_t>(distinct.index[static_cast<std::size_t>(order[id])]);
   });
   return store;
 }

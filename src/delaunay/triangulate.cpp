@@ -242,7 +242,7 @@ Triangulation delaunay(PointsView input, const Options& options) {
   // Back to the caller's numbering (2D 1M: 6M lookups, about 5 ms on one thread).
   util::for_ranges(simplices.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
-      simplices[i] = static_cast<std::int32_t>(points.input_index[static_cast<std::size_t>(simplices[i])]);
+      simplices[i] = points.input_index[static_cast<std::size_t>(simplices[i])];
   });
   if (!options.compute_neighbors) std::vector<std::int32_t>().swap(result.neighbors);
   stats.simplices = simplices.size() / static_cast<std::size_t>(width);
