@@ -693,10 +693,20 @@ TEST(DelaunayStorage, RoomForTheSimplicesIsBoundedByTheMachine) {
 }
 
 TEST(DelaunayNeighbors, CanBeLeftOut) {
-  const PointCloud points = drange::generate_points(Distribution::Uniform, 100, 2, 41);
-  drange::Options options;
-  options.compute_neighbors = false;
-  EXPECT_TRUE(drange::delaunay(points, options).neighbors.empty());
+  // Left out, they are not recorded at all (the frontier skips their writes), and the
+  // simplices are the same, in the same order, on the FIFO queue (2D) and the spatial one (3D).
+  for (int d : {2, 3})
+    for (int threads : {1, 2}) {
+      const PointCloud points = drange::generate_points(Distribution::Uniform, 3000, d, 41);
+      drange::Options with, without;
+      with.threads = without.threads = threads;
+      without.compute_neighbors = false;
+      const Triangulation all = drange::delaunay(points, with), simplices_only = drange::delaunay(points, without);
+      EXPECT_TRUE(simplices_only.neighbors.empty()) << d << "D, " << threads << " threads";
+      EXPECT_EQ(all.neighbors.size(), all.simplices.size()) << d << "D, " << threads << " threads";
+      EXPECT_EQ(simplices_only.simplices, all.simplices) << d << "D, " << threads << " threads";
+      EXPECT_EQ(simplices_only.stats.hull_facets, all.stats.hull_facets) << d << "D, " << threads << " threads";
+    }
 }
 
 template <class E>

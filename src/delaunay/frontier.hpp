@@ -47,7 +47,10 @@ class ProgressCountdown {
 template <class Queue>
 class Frontier {
  public:
-  Frontier(int d, std::int32_t points, Triangulation& result, const std::function<void(std::size_t)>& progress, Queue queue)
+  // `record_neighbors` false: Triangulation::neighbors stays empty (Options::compute_neighbors),
+  // and the turns skip its writes, one of them to the row of a simplex found long before.
+  Frontier(int d, std::int32_t points, Triangulation& result, const std::function<void(std::size_t)>& progress, Queue queue,
+           bool record_neighbors = true)
       : d_(d),
         width_(d + 1),
         simplices_(result.simplices),
@@ -57,6 +60,7 @@ class Frontier {
         queue_(std::move(queue)),
         progress_(progress),
         cached_table_bytes_(util::level2_cache_bytes(kDefaultCachedTableBytes)),
+        record_neighbors_(record_neighbors),
         points_(points),
         max_simplices_(engine::simplex_upper_bound(d, static_cast<std::size_t>(points))) {
     // Room for the simplices up front (simplex_estimate.hpp): growing by doubling copies them
@@ -65,7 +69,7 @@ class Frontier {
     const std::size_t room =
         engine::reservable_simplices(engine::expected_simplices(d, static_cast<std::size_t>(points)), width, 2);
     simplices_.reserve(room * width);
-    neighbors_.reserve(room * width);
+    if (record_neighbors_) neighbors_.reserve(room * width);
   }
 
   void open_first(const engine::FirstFacet& first) {
@@ -98,7 +102,7 @@ class Frontier {
   // Asks the cache for the neighbour entry of the facet's owner that close() writes: the owner
   // was found many turns ago, and its row has usually left the cache.
   void prefetch_owner(const FacetInfo& info) const {
-    if (info.owner.simplex < 0) return;
+    if (!record_neighbors_ || info.owner.simplex < 0) return;
     __builtin_prefetch(&neighbors_[static_cast<std::size_t>(info.owner.simplex) * static_cast<std::size_t>(width_) +
                                    static_cast<std::size_t>(info.owner.face)], 1);
   }
@@ -152,6 +156,7 @@ class Frontier {
   std::vector<std::uint64_t> closed_after_pop_;
   bool mark_closures_ = Queue::kMarksCheaply;
   std::size_t cached_table_bytes_;  // table_outgrows_cache()
+  bool record_neighbors_;
   // More simplices than this for `points_` points: a search returned a wrong apex
   // (simplex_estimate.hpp).
   std::int32_t points_;
@@ -178,10 +183,12 @@ void Frontier<Queue>::close(const std::int32_t* ids, const FacetInfo& info, std:
   for (int i = 0; i < d_; ++i) simplices_.push_back(ids[i]);
   simplices_.push_back(apex);
   if (swapped) std::swap(simplices_[base], simplices_[base + 1]);
-  for (int i = 0; i < d_; ++i) neighbors_.push_back(-1);
-  neighbors_.push_back(owner.simplex);
-  if (owner.simplex >= 0) neighbors_[static_cast<std::size_t>(owner.simplex) * width + static_cast<std::size_t>(owner.face)] = s;
-  else ++stats_.hull_facets;  // the first facet lies on the hull
+  if (record_neighbors_) {
+    for (int i = 0; i < d_; ++i) neighbors_.push_back(-1);
+    neighbors_.push_back(owner.simplex);
+    if (owner.simplex >= 0) neighbors_[static_cast<std::size_t>(owner.simplex) * width + static_cast<std::size_t>(owner.face)] = s;
+  }
+  if (owner.simplex < 0) ++stats_.hull_facets;  // the first facet lies on the hull
   // The other facets, facet f omitting vertex f: closed when open already, else opened.
   const int d = d_;
   const std::int32_t* open_side = derived + d * d;
@@ -191,8 +198,10 @@ void Frontier<Queue>::close(const std::int32_t* ids, const FacetInfo& info, std:
     engine::FacetOwner seen{};
     const engine::FacetOwner mine{s, f, queue_.next_entry()};
     if (table_.close_or_open(other, static_cast<std::uint32_t>(hash[f]), mine, &seen)) {
-      neighbors_[base + static_cast<std::size_t>(f)] = seen.simplex;
-      neighbors_[static_cast<std::size_t>(seen.simplex) * width + static_cast<std::size_t>(seen.face)] = s;
+      if (record_neighbors_) {
+        neighbors_[base + static_cast<std::size_t>(f)] = seen.simplex;
+        neighbors_[static_cast<std::size_t>(seen.simplex) * width + static_cast<std::size_t>(seen.face)] = s;
+      }
       std::uint64_t window = 0;
       if (mark_closures_ && !queue_.mark_closed(seen.entry, window)) closed_after_pop_.push_back(window);
     } else {

@@ -231,10 +231,11 @@ Triangulation delaunay(PointsView input, const Options& options) {
   SearchTotals totals;
   if (spatial_order(options.search.facet_order, d)) {
     Frontier<engine::SpatialFacetQueue> frontier(d, points.size, result, options.progress,
-                                                 engine::SpatialFacetQueue(d, points.size, kSpatialBlockShift));
+                                                 engine::SpatialFacetQueue(d, points.size, kSpatialBlockShift),
+                                                 options.compute_neighbors);
     search(frontier, first, points, options.search, team, kSpatialLookahead, totals);
   } else {
-    Frontier<FacetQueue> frontier(d, points.size, result, options.progress, FacetQueue(d));
+    Frontier<FacetQueue> frontier(d, points.size, result, options.progress, FacetQueue(d), options.compute_neighbors);
     search(frontier, first, points, options.search, team, Lookahead{0, 0}, totals);
   }
   stats.seconds_search = seconds_since(phase);
@@ -244,7 +245,6 @@ Triangulation delaunay(PointsView input, const Options& options) {
     for (std::size_t i = begin; i < end; ++i)
       simplices[i] = points.input_index[static_cast<std::size_t>(simplices[i])];
   });
-  if (!options.compute_neighbors) std::vector<std::int32_t>().swap(result.neighbors);
   stats.simplices = simplices.size() / static_cast<std::size_t>(width);
   stats.search_calls = totals.counters.calls;
   stats.points_tested = totals.counters.points_tested;
