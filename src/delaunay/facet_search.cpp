@@ -1103,7 +1103,8 @@ bool SearchKernel<D>::beats_candidate(std::int32_t id) {
   if (s == 0) {
     rows_[static_cast<std::size_t>(d)] = points_.point(id);
     // The ranks only the symbolic perturbation reads, looked up here: the filter decides
-    // nearly every test, and the rank array is one more that each candidate would touch.
+    // nearly every test, and the ranks (the kd-tree's order) are one more array that each
+    // candidate would touch.
     for (int i = 0; i < d; ++i) ranks_[static_cast<std::size_t>(i)] = points_.rank(facet_[i]);
     ranks_[static_cast<std::size_t>(d)] = points_.rank(candidate_);
     ranks_[static_cast<std::size_t>(d + 1)] = points_.rank(id);

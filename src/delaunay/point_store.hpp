@@ -19,7 +19,7 @@ struct PointStore {
   int dim = 0;
   std::int32_t size = 0;
   // The arrays are filled in full by prepare_points, on its threads: left uninitialised until
-  // then, their pages are first touched there (2D 1M: 32 MB not zeroed by one thread first).
+  // then, their pages are first touched there (2D 1M: 20 MB not zeroed by one thread first).
   util::UninitializedVector<double> coords;             // size * dim, in id order
   util::UninitializedVector<std::int32_t> input_index;  // input index of each id (n < 2^31)
   spatial::KdTree tree;                    // over the ids
