@@ -420,6 +420,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   std::array<double, kMaxRow> row_{};
   SearchCounters* counters_ = nullptr;
   SeedMemory& seeds_;  // SearchOptions::seed_candidate
+  static constexpr int kSeeds = D > 0 ? SeedMemory::per_point_in(D) : 0;  // per point; 0: the memory's
   const LeafBlocks& blocks_;  // points_.blocks
 
   // The exact stages' fixed-width cofactors: last, being large (the facet's part of the lifted
@@ -1576,8 +1577,8 @@ std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, Se
   reset_box();
   if (options_.seed_candidate) {
     for (int i = 0; i < d; ++i)
-      for (int k = 0; k < SeedMemory::kSeeds; ++k) {
-        const std::int32_t seed = seeds_.seed(facet[i], k);
+      for (int k = 0; k < (kSeeds > 0 ? kSeeds : seeds_.seeds_per_point()); ++k) {
+        const std::int32_t seed = seeds_.seed<kSeeds>(facet[i], k);
         if (seed >= 0) consider(seed);
       }
   }
@@ -1590,7 +1591,7 @@ std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, Se
     for (std::int32_t id = 0; id < points_.size; ++id) consider(id);
   }
   if (options_.seed_candidate && candidate_ >= 0) {
-    for (int i = 0; i < d; ++i) seeds_.remember(facet[i], candidate_);
+    for (int i = 0; i < d; ++i) seeds_.remember<kSeeds>(facet[i], candidate_);
   }
   return candidate_;
 }
@@ -1651,7 +1652,7 @@ std::unique_ptr<FacetSearch::Kernel> make_kernel(const PointStore& points, const
 }  // namespace
 
 FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options, KernelChoice choice, VectorWidth width)
-    : own_seeds_(std::make_unique<SeedMemory>(options.seed_candidate ? points.size : 0)),
+    : own_seeds_(std::make_unique<SeedMemory>(options.seed_candidate ? points.size : 0, points.dim)),
       kernel_(make_kernel(points, options, *own_seeds_, choice, width)) {}
 
 FacetSearch::FacetSearch(const PointStore& points, const SearchOptions& options, SeedMemory& seeds)

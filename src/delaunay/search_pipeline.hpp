@@ -87,7 +87,7 @@ class SearchPipeline {
         points_(points),
         options_(options),
         frontier_(frontier),
-        seeds_(options.seed_candidate ? points.size : 0) {
+        seeds_(options.seed_candidate ? points.size : 0, points.dim) {
     std::size_t window = lookahead.size;
     if (window == 0) {
       window = 64;
