@@ -11,9 +11,11 @@
 #include <cstring>
 #include <iterator>
 #include <limits>
+#include <string>
 
 #include "delaunay/known_ties.hpp"
 #include "delaunay/leaf_blocks.hpp"
+#include "drange/errors.hpp"
 #include "drange/points.hpp"
 #include "geometry/error_bound.hpp"
 #include "geometry/minors.hpp"
@@ -455,6 +457,10 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       sphere_ties_(points.dim + 1, points.size),
       seeds_(seeds),
       blocks_(points.blocks) {
+  // seed<kSeeds>() and remember<kSeeds>() take the memory's layout on trust.
+  if (kSeeds > 0 && seeds.seeds_per_point() != kSeeds)
+    throw InternalError("facet search: a seed memory of " + std::to_string(seeds.seeds_per_point()) +
+                        " seeds per point for a kernel of " + std::to_string(kSeeds));
   if (options.use_kdtree && options.sphere_shell && points.shell.active()) {
     shell_ = &points.shell;
     shell_everywhere_ = shell_->node_sphere.front() >= 0;
