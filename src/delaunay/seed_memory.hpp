@@ -49,12 +49,23 @@ class SeedMemory {
     const auto per_point = static_cast<std::size_t>(K > 0 ? K : per_point_);
     return seeds_[static_cast<std::size_t>(id) * per_point + static_cast<std::size_t>(i)].load(std::memory_order_relaxed);
   }
-  // Records `apex` as the most recent seed of point `id`.
+  // Records `apex` as the most recent seed of point `id`: moved to the front if it is a seed
+  // already, so that a point keeps distinct seeds. Consecutive searches around a point often
+  // find the same apex (the facets of one ring around an edge), and shifting it in again had
+  // pushed out the one other seed: 3D 216k candidates per simplex 2.50 -> 2.36, time_search
+  // 1.214 -> 1.142 s (medians of 5 interleaved runs); 4D 100k 2.72 -> 2.60, 3.900 -> 3.721 s
+  // (medians of 3); 5D 20k and 3D 1M level; callgrind 3D 50k -1.9%, 4D 20k -1.4%, 5D 5k -1.1%.
   template <int K = 0>
   void remember(std::int32_t id, std::int32_t apex) {
     const int per_point = K > 0 ? K : per_point_;
     std::atomic<std::int32_t>* seeds = &seeds_[static_cast<std::size_t>(id) * static_cast<std::size_t>(per_point)];
-    for (int k = per_point - 1; k > 0; --k) seeds[k].store(seeds[k - 1].load(std::memory_order_relaxed), std::memory_order_relaxed);
+    int last = per_point - 1;  // the seed that leaves (none if apex is one)
+    for (int k = 0; k < per_point - 1; ++k)
+      if (seeds[k].load(std::memory_order_relaxed) == apex) {
+        last = k;
+        break;
+      }
+    for (int k = last; k > 0; --k) seeds[k].store(seeds[k - 1].load(std::memory_order_relaxed), std::memory_order_relaxed);
     seeds[0].store(apex, std::memory_order_relaxed);
   }
 
