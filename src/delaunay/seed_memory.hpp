@@ -28,7 +28,8 @@ class SeedMemory {
   // seed offered: 2D 1M time_search 0.840 -> 0.801 s (medians of 5 interleaved runs, every
   // pair faster; points tested per triangle 2.56 -> 2.58; callgrind 2D 100k -1.2%; 4 MB less),
   // while three or four from 3D on stayed level (3D 1M, 4D 100k, 5D 20k, three interleaved
-  // runs).
+  // runs). Three distinct seeds (twenty-ninth round) took fewer candidates again but were not
+  // faster (callgrind 3D -0.6%, 4D -0.2%, 5D +0.25%; time_search level or slower).
   // The searches compiled for one dimension pass it as K to seed() and remember(): with the
   // count a variable, its loops and strides cost 3D 20k 1.1% more instructions (callgrind).
   static constexpr int per_point_in(int d) { return d == 2 ? 1 : 2; }
