@@ -483,7 +483,7 @@ TEST(DelaunayVariants, EveryVariantGivesTheSameTriangulation) {
                                           drange::generate_points(Distribution::Gaussian, 300, 4, 22)};
   for (const PointCloud& points : inputs) {
     const auto reference = canonical(drange::delaunay(points));
-    for (const char* name : {"scan", "kdtree", "no-prune", "no-order", "paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "fifo", "spatial"}) {
+    for (const char* name : {"scan", "kdtree", "no-prune", "no-order", "paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-tie-memory", "no-slab", "fifo", "spatial"}) {
       drange::Options options;
       options.search = drange::search_variant(name);
       const Triangulation t = drange::delaunay(points, options);
@@ -522,7 +522,7 @@ TEST(DelaunayVariants, BottomUpAndSeedsChangeNothingOnDegenerateInputs) {
   }
   for (const auto& [name, points] : cases) {
     const auto reference = canonical(drange::delaunay(points));
-    for (const char* variant : {"paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "scan", "fifo", "spatial"}) {
+    for (const char* variant : {"paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-slab", "scan", "fifo", "spatial"}) {
       drange::Options options;
       options.search = drange::search_variant(variant);
       EXPECT_EQ(canonical(drange::delaunay(points, options)), reference) << name << ", " << variant;

@@ -53,13 +53,17 @@ struct SearchOptions {
   // again (ties that no floating-point filter decides: exactly cospherical points whose
   // coordinates are not dyadic, as in a grid in cylindrical coordinates).
   bool remember_ties = true;
+  // On points sampled from surfaces, also skip the kd-tree nodes whose points lie in a thin slab
+  // across their patch's normal that misses the candidate's ball or lies on the closed side of
+  // the facet (spatial/node_slabs.hpp), where their axis-aligned boxes do not.
+  bool node_slabs = true;
   // Which open facet is searched next (ours too: it changes the simplices' order, not the set).
   FacetOrder facet_order = FacetOrder::automatic;
 };
 
 // Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order",
 // "paper" (the paper's three steps and nothing else, FIFO order), "no-bottom-up", "no-seed",
-// "no-ball", "no-shell", "no-tie-memory", "fifo" (full with the paper's FIFO facet order in
+// "no-ball", "no-shell", "no-tie-memory", "no-slab", "fifo" (full with the paper's FIFO facet order in
 // every dimension), "spatial" (full with the spatial facet order in every dimension).
 // Throws UsageError naming the unknown value.
 SearchOptions search_variant(const std::string& name);

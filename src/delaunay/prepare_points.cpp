@@ -210,6 +210,7 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   store.tree.build_and_reorder(by_rank.data(), store.size, d, leaf_size, team.threads());
   store.coords = std::move(by_rank);  // now in tree order
   store.blocks = LeafBlocks(store.tree, store.coords.data(), d, team);
+  store.slabs = NodeSlabs(store.tree, store.coords.data(), d, team);
   store.shell = fit_sphere_shell(store.coords.data(), store.size, d, store.tree);
   const auto& order = store.tree.order();  // the rank of each id (PointStore::rank)
   store.input_index.resize(kept);
