@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""bench/degenerate_families.py: writes the eighteenth to twenty-sixth rounds' probe inputs
-(bench/RESULTS.md, "The eighteenth round" to "The twenty-sixth round"): 20 000 points each
-(5 000 for two_spheres4; 10 000, 3 125, 729 and 1 458 for the 4D to 7D decimal grids) on curved sets
-that are not one input sphere, a terrain with a flat plateau, where the direct search is
-weak, and decimal grids and rounded points, whose ties need the exact stages, in Qhull's
-format, into a directory.
+"""bench/degenerate_families.py: writes the eighteenth to thirtieth rounds' probe inputs
+(bench/RESULTS.md, "The eighteenth round" to "The thirtieth round"): 20 000 points each
+(5 000 for two_spheres4; 10 000, 3 125, 729 and 1 458 for the 4D to 7D decimal grids; 200 000
+for ellipsoid_200k) on curved sets that are not one input sphere (among them smooth surfaces,
+where the direct search is weak), a terrain with a flat plateau, and decimal grids and
+rounded points, whose ties need the exact stages, in Qhull's format, into a directory.
 
     bench/degenerate_families.py DIR
 
@@ -99,6 +99,20 @@ def families(rng):
     # (7D): {0, .1, .2}^6 and {0, .1, .2}^6 x {0, .1}.
     yield "decimal_grid6", [[0.1 * x for x in p] for p in itertools.product(range(3), repeat=6)]
     yield "decimal_grid7", [[0.1 * x for x in p + (z,)] for p in itertools.product(range(3), repeat=6) for z in range(2)]
+    # The thirtieth round's smooth surfaces that are no sphere, as a scan samples an object: an
+    # ellipse in the plane, an ellipsoid of axes 1, 0.7 and 0.4 (20 000 and 200 000 points),
+    # and a sphere with waves of a fifth of its radius. (Last, so that the families above keep
+    # their points.)
+    yield "ellipse", [[x[0], 0.6 * x[1]] for x in (on_sphere(rng, 2) for _ in range(N))]
+    for name, count in (("ellipsoid", N), ("ellipsoid_200k", 10 * N)):
+        yield name, [[x[0], 0.7 * x[1], 0.4 * x[2]] for x in (on_sphere(rng, 3) for _ in range(count))]
+    wavy = []
+    for _ in range(N):
+        x = on_sphere(rng, 3)
+        polar, azimuth = math.acos(max(-1.0, min(1.0, x[2]))), math.atan2(x[1], x[0])
+        r = 1 + 0.2 * math.sin(3 * polar) * math.cos(2 * azimuth)
+        wavy.append([r * c for c in x])
+    yield "wavy_sphere", wavy
 
 
 def main():

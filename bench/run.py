@@ -65,6 +65,7 @@ DEGENERATE = [("family:" + name, n, d) for name, n, d in [
     ("two_circles", 20000, 2), ("bubbles2", 20000, 2), ("polar_grid", 20000, 2),
     ("two_spheres3", 20000, 3), ("five_spheres3", 20000, 3), ("layers3", 20000, 3), ("bubbles3", 20000, 3),
     ("cylinder_rings", 20000, 3), ("circle_in_3d", 20002, 3), ("cylinder", 20000, 3), ("torus", 20000, 3),
+    ("ellipse", 20000, 2), ("ellipsoid", 20000, 3), ("ellipsoid_200k", 200000, 3), ("wavy_sphere", 20000, 3),
     ("hemisphere", 20000, 3), ("sphere_in_ball", 20000, 3), ("two_spheres4", 5000, 4), ("plateau", 20000, 3),
     ("decimal_grid3", 19683, 3), ("decimal_grid2", 20000, 2), ("rounded3", 20000, 3),
     ("rounded3_dense", 100000, 3), ("rounded4", 20000, 4), ("decimal_grid4", 10000, 4), ("decimal_grid5", 3125, 5),
