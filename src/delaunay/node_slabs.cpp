@@ -7,13 +7,12 @@
 
 #include "delaunay/team.hpp"
 #include "drange/points.hpp"
+#include "geometry/error_bound.hpp"
 #include "util/for_ranges.hpp"
 
 namespace drange::engine {
 
 namespace {
-constexpr double kUnit = 0x1p-53;  // the unit roundoff
-
 // A slab is kept only when it is this many times thinner than the node's box along its normal.
 constexpr double kThinner = 4.0;
 
@@ -169,7 +168,7 @@ bool thin_slab(const spatial::KdTree& tree, std::int32_t i, const double* coords
   if (!((t_hi - t_lo) * kThinner < extent)) return false;
   // Each computed n . x is within (d + 1) u |n| . |x| (+ underflow) of its exact value; the
   // margin also covers the rounding of lo and hi themselves.
-  const double margin = 2 * static_cast<double>(d + 3) * kUnit * magnitude + 0x1p-1000;
+  const double margin = 2 * static_cast<double>(d + 3) * geometry::kUnitRoundoff * magnitude + 0x1p-1000;
   out[d] = t_lo - margin;
   out[d + 1] = t_hi + margin;
   return true;

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/error_bound.hpp"
 #include "spatial/kdtree.hpp"
 
 namespace drange::engine {
@@ -65,7 +66,7 @@ bool NodeSlabs::misses_ball(const double* slab, const double* centre, double rea
     q += slab[k] * centre[k];
     q_abs += std::fabs(slab[k] * centre[k]);
   }
-  const double q_error = (d + 2) * 0x1p-53 * q_abs + 0x1p-1000;
+  const double q_error = (d + 2) * geometry::kUnitRoundoff * q_abs + 0x1p-1000;
   const double gap = std::max(slab[d] - q, q - slab[d + 1]);
   // The gap's own rounding (relative u) and the norm's are far inside the 1e-9.
   return gap > reach * (1 + 1e-9) + 2 * q_error;
