@@ -180,7 +180,7 @@ NodeSlabs::NodeSlabs(const spatial::KdTree& tree, const double* coords, int dim,
   const auto d = static_cast<std::size_t>(dim);
   std::vector<double> mean, m2;
   node_moments(tree, coords, dim, team, mean, m2);
-  // Each node's slab in a place of its own (on the team's threads), then the kept ones packed.
+  // Each node's slab in a place of its own, on the team's threads.
   std::vector<double> fitted(count * stride());
   std::vector<char> kept(count, 0);
   util::for_ranges(count, team, [&](std::size_t, std::size_t begin, std::size_t end) {
@@ -192,17 +192,18 @@ NodeSlabs::NodeSlabs(const spatial::KdTree& tree, const double* coords, int dim,
       kept[i] = thin_slab(tree, static_cast<std::int32_t>(i), coords, dim, covariance, &fitted[i * stride()]);
     }
   }, 256);
-  index_.assign(count, -1);
-  for (std::size_t i = 0; i < count; ++i) {
-    if (!kept[i]) continue;
-    index_[i] = static_cast<std::int32_t>(slabs_.size() / stride());
-    slabs_.insert(slabs_.end(), &fitted[i * stride()], &fitted[(i + 1) * stride()]);
-  }
-  if (slabs_.empty()) index_.clear();
+  for (const char k : kept) kept_ += k != 0;
+  if (kept_ == 0) return;
+  for (std::size_t i = 0; i < count; ++i)
+    if (!kept[i]) {
+      fitted[i * stride() + d] = 1.0;  // lo > hi
+      fitted[i * stride() + d + 1] = 0.0;
+    }
+  slabs_ = std::move(fitted);
 }
 
 std::size_t NodeSlabs::memory_bytes() const {
-  return index_.capacity() * sizeof(std::int32_t) + slabs_.capacity() * sizeof(double);
+  return slabs_.capacity() * sizeof(double);
 }
 
 }  // namespace drange::engine

@@ -37,8 +37,9 @@ class NodeSlabs {
 
   // The slab of `node`: n (dim entries), then lo and hi; nullptr when the node keeps none.
   const double* slab(std::int32_t node) const {
-    const std::int32_t at = index_.empty() ? -1 : index_[static_cast<std::size_t>(node)];
-    return at < 0 ? nullptr : &slabs_[static_cast<std::size_t>(at) * stride()];
+    if (slabs_.empty()) return nullptr;
+    const double* s = &slabs_[static_cast<std::size_t>(node) * stride()];
+    return s[d_] <= s[d_ + 1] ? s : nullptr;  // lo > hi: none
   }
   // Whether no point of the slab is within `reach` of `centre`, exactly, whatever the rounding
   // here. D > 0: the caller promises dim() == D.
@@ -46,14 +47,17 @@ class NodeSlabs {
   bool misses_ball(const double* slab, const double* centre, double reach) const;
   int dim() const { return d_; }
   // How many nodes keep a slab.
-  std::size_t size() const { return slabs_.size() / (stride() ? stride() : 1); }
+  std::size_t size() const { return kept_; }
   std::size_t memory_bytes() const;
 
  private:
   std::size_t stride() const { return static_cast<std::size_t>(d_) + 2; }
   int d_ = 0;
-  std::vector<std::int32_t> index_;  // per node: its slab's position in slabs_, or -1
-  std::vector<double> slabs_;        // per slab: n, lo, hi
+  // Per node (when any node keeps one): n, lo, hi, with lo > hi where the node keeps none. A
+  // slab per node rather than an index into the kept ones: the search reads one array, not two
+  // (ellipsoid 200k: time_search 4.27 -> 4.17 s, medians of 3 interleaved runs).
+  std::vector<double> slabs_;
+  std::size_t kept_ = 0;
 };
 
 template <int D>
