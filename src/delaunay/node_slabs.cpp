@@ -113,7 +113,7 @@ void node_moments(const spatial::KdTree& tree, const double* coords, int dim, Te
       leaf_moments(coords, nodes[i].begin, nodes[i].end, dim, &mean[i * d], &m2[i * d * d]);
     }
   }, 256);
-  for (std::size_t i = nodes.size(); i-- > 0;) {  // children after their parent (preorder)
+  for (std::size_t i = nodes.size(); i-- > 0;) {  // backwards: a node's children follow it in preorder
     if (nodes[i].right < 0) continue;
     const std::size_t left = i + 1, right = static_cast<std::size_t>(nodes[i].right);
     const double na = nodes[left].end - nodes[left].begin, nb = nodes[right].end - nodes[right].begin;
