@@ -503,6 +503,10 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
   if (options.use_kdtree && options.sphere_shell && points.shell.active()) {
     shell_ = &points.shell;
     shell_everywhere_ = shell_->node_sphere.front() >= 0;
+    // Every point near one sphere: its offsets and cones bound each node better than a slab
+    // (a hemisphere of 20 000 points: time_search 0.180 -> 0.185 s with slabs tried, medians
+    // of 5 interleaved runs).
+    if (shell_everywhere_) slabs_ = nullptr;
   }
 #if DRANGE_AVX2_LANES
   avx2_ = wide && __builtin_cpu_supports("avx2");
