@@ -55,7 +55,7 @@ struct SearchOptions {
   bool remember_ties = true;
   // On points sampled from surfaces, also skip the kd-tree nodes whose points lie in a thin slab
   // across their patch's normal that misses the candidate's ball or lies on the closed side of
-  // the facet (spatial/node_slabs.hpp), where their axis-aligned boxes do not.
+  // the facet (src/delaunay/node_slabs.hpp), where their axis-aligned boxes do not.
   bool node_slabs = true;
   // Which open facet is searched next (ours too: it changes the simplices' order, not the set).
   FacetOrder facet_order = FacetOrder::automatic;

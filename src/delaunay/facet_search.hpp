@@ -24,7 +24,9 @@
 // ball, not only its bounding box, and once there is a ball the closed side is no longer
 // tested per node (the ball leaves only a thin cap of it); on points near spheres, where every
 // candidate's ball of a facet on one of them holds nearly all its points, nodes and points are
-// decided by the lifted determinant's exact form around that sphere's centre (sphere_shell.hpp).
+// decided by the lifted determinant's exact form around that sphere's centre (sphere_shell.hpp);
+// on points sampled from surfaces, a node whose points lie in a thin slab (node_slabs.hpp) is
+// skipped when the slab misses the ball or lies on the closed side.
 //
 // The arithmetic is compiled for d = 2..8 (fixed-size loops) and once for any d; the same
 // template serves all (facet_search.cpp).

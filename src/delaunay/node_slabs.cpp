@@ -202,8 +202,4 @@ NodeSlabs::NodeSlabs(const spatial::KdTree& tree, const double* coords, int dim,
   slabs_ = std::move(fitted);
 }
 
-std::size_t NodeSlabs::memory_bytes() const {
-  return slabs_.capacity() * sizeof(double);
-}
-
 }  // namespace drange::engine

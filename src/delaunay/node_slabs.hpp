@@ -45,10 +45,8 @@ class NodeSlabs {
   // here. D > 0: the caller promises dim() == D.
   template <int D = 0>
   bool misses_ball(const double* slab, const double* centre, double reach) const;
-  int dim() const { return d_; }
   // How many nodes keep a slab.
   std::size_t size() const { return kept_; }
-  std::size_t memory_bytes() const;
 
  private:
   std::size_t stride() const { return static_cast<std::size_t>(d_) + 2; }

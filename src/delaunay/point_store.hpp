@@ -25,7 +25,7 @@ struct PointStore {
   util::UninitializedVector<std::int32_t> input_index;  // input index of each id (n < 2^31)
   spatial::KdTree tree;                    // over the ids
   LeafBlocks blocks;                       // the leaves' points in blocks, for the search's leaf scan
-  NodeSlabs slabs;                // thin slabs around the flat nodes' points (surfaces)
+  NodeSlabs slabs;                         // thin slabs around the flat nodes' points (surfaces)
   // True when the coordinates were scaled below 1 in magnitude (prepare_points.cpp): then every
   // entry of the search's determinants is below 2^6 and no underflow can escape the error bounds
   // of its fast filter. False only for inputs spanning more than 2^1022 in magnitude, which

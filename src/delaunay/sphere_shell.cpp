@@ -756,10 +756,10 @@ void join_near_spheres(const double* coords, int dim, const std::vector<Sphere>&
 // Which spheres only fit a small cap of a smooth surface (an ellipsoid, a scanned object):
 // near every point of such a surface, a patch lies within kNear of its osculating sphere, but
 // the points of that sphere span a small part of it (extent under kWideCap times its radius)
-// and lie far from it within rounding (some farther than kTightCap relative). The shell gains
-// nothing there (ellipsoid of 80 000 points, 228 such spheres: time_search level with and
-// without the shell), and the points left out of them cost join_near_spheres a test against
-// every sphere (320 000 points, 4 212 spheres: 0.45 s). Bubbles, the cells of a foam and
+// and some lie farther from it than rounding (kTightCap relative). The shell gains nothing
+// there (ellipsoid of 80 000 points, 228 such spheres: time_search level with and without the
+// shell), and the points left out of them cost join_near_spheres a test against every sphere
+// (320 000 points, 1 632 spheres: 0.45 s). Bubbles, the cells of a foam and
 // spheres with points off them span at least 2.69 radii in bench/degenerate_families.py, their
 // points within 6e-15; the caps of the ellipsoid of 80 000 points spanned at most 0.34 radii,
 // some of their points 1.5e-4 to 9.8e-4 off.
