@@ -17,11 +17,34 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
+#include <type_traits>
 #include <utility>
 
 namespace drange::util {
 
 namespace select_detail {
+
+// The partition moves its elements as whole objects, padding included (T is trivially
+// copyable): a member-wise copy of the kd-tree's items stored their 4-byte index alone, and a
+// later 8-byte load of the same place (the index and the padding after it) then waited for
+// that store to leave the store buffer instead of taking its value from it. With the copy
+// compared too, GCC kept it on the stack to index its coordinate by the split axis.
+// KdTree::build_and_reorder alone, 1M uniform points, min of 7: 2D 135 -> 122 ms, 3D 148 ->
+// 135, 4D 167 -> 147. (The few moves elsewhere here are not worth it: as whole objects, 2D
+// was 2 ms slower.)
+template <class T>
+void copy_object(T* to, const T* from) {
+  static_assert(std::is_trivially_copyable_v<T>, "moved as bytes");
+  std::memcpy(static_cast<void*>(to), static_cast<const void*>(from), sizeof(T));
+}
+template <class T>
+void swap_objects(T* a, T* b) {
+  T t;
+  copy_object(&t, a);
+  copy_object(a, b);
+  copy_object(b, &t);
+}
 
 // Moves the median of *a, *b, *c (by `less`) to *a.
 template <class T, class Less>
@@ -38,18 +61,17 @@ void median_to(T* a, T* b, T* c, Less less) {
 // of [first, p) less than it, and none of (p, last).
 template <class T, class Less>
 T* partition_around_first(T* first, T* last, Less less) {
-  const T pivot = *first;
+  T pivot;
+  copy_object(&pivot, first);
   T* write = first + 1;  // [first + 1, write) < pivot <= [write, read)
   for (T* read = first + 1; read != last; ++read) {
-    const T x = *read;
-    const bool smaller = less(x, pivot);
-    *read = *write;
-    *write = x;
+    const bool smaller = less(*read, pivot);
+    swap_objects(read, write);
     write += smaller;
   }
   --write;
-  *first = *write;
-  *write = pivot;
+  copy_object(first, write);
+  copy_object(write, &pivot);
   return write;
 }
 
