@@ -6,7 +6,8 @@
 // them are mispredicted. Here the partition is Lomuto's, with the element moves made whatever
 // the comparison says and only the write position advanced by it (A. Alexandrescu, "Lomuto's
 // Comeback", 2020): a comparison costs a few instructions and no misprediction. The pivot is
-// the median of three, or of three medians of three on large ranges, and a range that does not
+// the median of three, of three medians of three from 256 elements, or from 4 096 elements an
+// element of a sample chosen for nth's rank (sampled_pivot_to_first); a range that does not
 // shrink fast enough (a pathological order) is finished by std::nth_element.
 //
 // With a strict total order (the kd-tree's: key, then index), the elements before and after nth
@@ -58,9 +59,10 @@ void median_to(T* a, T* b, T* c, Less less) {
 }
 
 // Partitions [first, last) around the pivot *first: returns p with *p the pivot, every element
-// of [first, p) less than it, and none of (p, last).
+// of [first, p) less than it, and none of (p, last). Out of line: inlined into select_nth's
+// loop, the kd-tree build of 1M 3D points took 145 ms instead of 135.
 template <class T, class Less>
-T* partition_around_first(T* first, T* last, Less less) {
+[[gnu::noinline]] T* partition_around_first(T* first, T* last, Less less) {
   T pivot;
   copy_object(&pivot, first);
   T* write = first + 1;  // [first + 1, write) < pivot <= [write, read)
@@ -128,23 +130,19 @@ void select_nth(T* first, T* nth, T* last, Less less) {
     const std::ptrdiff_t n = last - first;
     if (n >= select_detail::kSampleFrom) {
       select_detail::sampled_pivot_to_first(first, nth, last, less);
-      T* pivot = select_detail::partition_around_first(first, last, less);
-      if (pivot == nth) return;
-      if (nth < pivot) last = pivot;
-      else first = pivot + 1;
-      continue;
-    }
-    T* middle = first + n / 2;
-    if (n >= 256) {  // Tukey's ninther: a pivot nearer the median in fewer passes
-      const std::ptrdiff_t step = n / 8;
-      median_to(first + 1, first + 1 + step, first + 1 + 2 * step, less);
-      median_to(middle, middle - step, middle + step, less);
-      median_to(last - 1, last - 1 - step, last - 1 - 2 * step, less);
-      median_to(middle, first + 1, last - 1, less);
     } else {
-      median_to(middle, first, last - 1, less);
+      T* middle = first + n / 2;
+      if (n >= 256) {  // Tukey's ninther: a pivot nearer the median in fewer passes
+        const std::ptrdiff_t step = n / 8;
+        median_to(first + 1, first + 1 + step, first + 1 + 2 * step, less);
+        median_to(middle, middle - step, middle + step, less);
+        median_to(last - 1, last - 1 - step, last - 1 - 2 * step, less);
+        median_to(middle, first + 1, last - 1, less);
+      } else {
+        median_to(middle, first, last - 1, less);
+      }
+      std::swap(*first, *middle);
     }
-    std::swap(*first, *middle);
     T* pivot = select_detail::partition_around_first(first, last, less);
     if (pivot == nth) return;
     if (nth < pivot) last = pivot;
