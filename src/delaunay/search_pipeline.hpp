@@ -136,14 +136,15 @@ class SearchPipeline {
   // and points that the previous one brought into its core's cache. With runs of 16, the two
   // threads alternated so often that each search missed the other core's cache lines: 2D 1M
   // points, the search threads' CPU time was 35% above the serial search's; with 128, 10%.
-  // With 512 (FIFO; the spatial order's fixed window keeps its runs at 128 for 2 threads),
-  // 2D 1M on 2 threads searched in 0.412 to 0.417 s instead of 0.432 to 0.449 (3 interleaved
-  // runs each), and wasted 700 searches instead of 2 500: the facets a thread closes are more
-  // often in its own run, where its closure predictor sees them.
+  // With up to 512 (FIFO; the spatial order's fixed window keeps its runs at 128 for 2
+  // threads), 2D 1M on 2 threads searched in 0.417 to 0.426 s instead of 0.431 to 0.437 (5
+  // interleaved runs each), and wasted 700 searches instead of 2 500: the facets a thread
+  // closes are more often in its own run, where its closure predictor sees them.
   static constexpr std::uint64_t kRun = 512;
-  // But a thread claims no more than its share of the facets waiting, nor fewer than this:
-  // with runs of 512 and a short frontier (2D 20k), one thread took what the window held and
-  // the other waited.
+  // But a claim takes no more of the unclaimed facets than one run's worth of a window of
+  // kRunsPerThread runs per thread, and no fewer than this: with runs of 512 on a short
+  // frontier (2D 20k), one thread took all the window held and the other waited (0.009 ->
+  // 0.011 to 0.019 s).
   static constexpr std::uint64_t kLeastRun = 128;
   // The window, in runs per thread: enough that a thread rarely finds every facet of the window
   // claimed while the turn waits for a run still being searched. The longer the window, the
@@ -271,8 +272,8 @@ class SearchPipeline {
     }
   }
 
-  // Claims the next facets of the window, up to run_ of them, and up to a fair share of those
-  // waiting when that is more than kLeastRun: [begin, end).
+  // Claims the next facets of the window, up to run_ of them and, beyond kLeastRun, up to the
+  // share of the unclaimed ones described at kLeastRun: [begin, end).
   bool claim_run(std::uint64_t& begin, std::uint64_t& end) {
     std::uint64_t k = claimed_.load(std::memory_order_relaxed);
     for (;;) {
