@@ -272,14 +272,15 @@ class SearchPipeline {
     }
   }
 
-  // Claims the next facets of the window, up to run_ of them and, beyond kLeastRun, up to the
-  // share of the unclaimed ones described at kLeastRun: [begin, end).
+  // Claims the next facets of the window, [begin, end): at most run_, and at most
+  // unclaimed / (kRunsPerThread * threads) unless that is below kLeastRun.
   bool claim_run(std::uint64_t& begin, std::uint64_t& end) {
+    const std::uint64_t runs_in_window = kRunsPerThread * static_cast<std::uint64_t>(threads_);
     std::uint64_t k = claimed_.load(std::memory_order_relaxed);
     for (;;) {
       const std::uint64_t filled = filled_.load(std::memory_order_acquire);
       if (k >= filled) return false;
-      const std::uint64_t share = std::max<std::uint64_t>(kLeastRun, (filled - k) / (kRunsPerThread * static_cast<std::uint64_t>(threads_)));
+      const std::uint64_t share = std::max<std::uint64_t>(kLeastRun, (filled - k) / runs_in_window);
       const std::uint64_t last = std::min({k + run_, k + share, filled});
       if (claimed_.compare_exchange_weak(k, last, std::memory_order_acq_rel)) {
         run_end_[slot(k)].store(last, std::memory_order_release);
