@@ -483,7 +483,7 @@ TEST(DelaunayVariants, EveryVariantGivesTheSameTriangulation) {
                                           drange::generate_points(Distribution::Gaussian, 300, 4, 22)};
   for (const PointCloud& points : inputs) {
     const auto reference = canonical(drange::delaunay(points));
-    for (const char* name : {"scan", "kdtree", "no-prune", "no-order", "paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-tie-memory", "no-slab", "fifo", "spatial"}) {
+    for (const char* name : {"scan", "kdtree", "no-prune", "no-order", "paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-tie-memory", "no-slab", "no-hull", "fifo", "spatial"}) {
       drange::Options options;
       options.search = drange::search_variant(name);
       const Triangulation t = drange::delaunay(points, options);

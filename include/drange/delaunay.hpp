@@ -59,11 +59,16 @@ struct SearchOptions {
   bool node_slabs = true;
   // Which open facet is searched next (ours too: it changes the simplices' order, not the set).
   FacetOrder facet_order = FacetOrder::automatic;
+  // In 2D, find the convex hull's edges with no other point on their line beforehand (exactly,
+  // by a monotone chain), and skip the searches of their outer sides, which hold no point
+  // (src/delaunay/hull_edges.hpp). Pays on points in convex position (a circle, an ellipse),
+  // where half the facets are hull edges; kept only for hulls of many edges.
+  bool known_hull_edges = true;
 };
 
 // Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order",
 // "paper" (the paper's three steps and nothing else, FIFO order), "no-bottom-up", "no-seed",
-// "no-ball", "no-shell", "no-tie-memory", "no-slab", "fifo" (full with the paper's FIFO facet order in
+// "no-ball", "no-shell", "no-tie-memory", "no-slab", "no-hull", "fifo" (full with the paper's FIFO facet order in
 // every dimension), "spatial" (full with the spatial facet order in every dimension).
 // Throws UsageError naming the unknown value.
 SearchOptions search_variant(const std::string& name);
