@@ -1,6 +1,6 @@
 // tests/hull_edges_test.cpp: the clean hull edges of 2D point sets (delaunay/hull_edges.cpp)
 // against a brute-force oracle, and the search that skips their outer sides
-// (SearchOptions::known_hull_edges).
+// (SearchOptions::known_hull_facets).
 //
 // A pair (f0, f1) is a clean hull edge when every other point lies strictly on one side of its
 // line (exact rational orientations, tests/oracle.hpp); outer_sigma must then name the other
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "delaunay/hull_edges.hpp"
+#include "delaunay/hull_triangles.hpp"
 #include "delaunay/point_store.hpp"
 #include "delaunay/prepare_points.hpp"
 #include "delaunay/team.hpp"
@@ -162,6 +163,132 @@ TEST(HullEdges, TheSearchFindsTheSameValidTriangulationWithFewerCalls) {
     EXPECT_LT(with.stats.search_calls, without.stats.search_calls);
     EXPECT_TRUE(drange::check_triangulation(points, with.simplices).valid);
     EXPECT_EQ(triangulate(points, "full", 3).simplices, with.simplices) << "3 threads";
+  }
+}
+
+}  // namespace
+
+// ---- 3D: the clean hull facets (delaunay/hull_triangles.cpp). ----
+
+namespace {
+
+using drange::engine::HullTriangles;
+
+int orientation3(const double* a, const double* b, const double* c, const double* x) {
+  long double u[3], v[3], w[3];
+  for (int k = 0; k < 3; ++k) {
+    u[k] = static_cast<long double>(b[k]) - a[k];
+    v[k] = static_cast<long double>(c[k]) - a[k];
+    w[k] = static_cast<long double>(x[k]) - a[k];
+  }
+  const long double t0 = u[0] * (v[1] * w[2] - v[2] * w[1]), t1 = u[1] * (v[2] * w[0] - v[0] * w[2]),
+                    t2 = u[2] * (v[0] * w[1] - v[1] * w[0]);
+  const long double det = t0 + t1 + t2, margin = 1e-12L * (std::fabs(t0) + std::fabs(t1) + std::fabs(t2));
+  if (det > margin) return 1;
+  if (det < -margin) return -1;
+  return drange::test::reference_orientation(3, {a, b, c, x});
+}
+
+// -1 when every other point has O(x) = det[f1 - f0; f2 - f0; x - f0] > 0, +1 when every other
+// has O(x) < 0, else 0.
+int outer_sigma_3d_by_definition(const PointStore& store, const std::int32_t* f) {
+  bool all_positive = true, all_negative = true;
+  for (std::int32_t x = 0; x < store.size && (all_positive || all_negative); ++x) {
+    if (x == f[0] || x == f[1] || x == f[2]) continue;
+    const int sign = orientation3(store.point(f[0]), store.point(f[1]), store.point(f[2]), store.point(x));
+    all_positive = all_positive && sign > 0;
+    all_negative = all_negative && sign < 0;
+  }
+  return all_positive ? -1 : all_negative ? 1 : 0;
+}
+
+// Every sorted triple against the definition; with `general` (no four points coplanar on the
+// hull) the hull must be kept, else it may give up (then it keeps nothing). Returns the clean
+// facets by definition.
+std::size_t expect_3d_matches_definition(const PointCloud& points, bool general, const std::string& what) {
+  const PointStore store = store_of(points, 8);
+  const HullTriangles hull(store, 1u << 30, 0);  // no sample, kept whatever its size
+  EXPECT_TRUE(hull.built()) << what;
+  if (general) EXPECT_TRUE(hull.active()) << what;
+  std::size_t clean = 0;
+  for (std::int32_t a = 0; a < store.size; ++a)
+    for (std::int32_t b = a + 1; b < store.size; ++b)
+      for (std::int32_t c = b + 1; c < store.size; ++c) {
+        const std::int32_t f[3] = {a, b, c};
+        const int expected = outer_sigma_3d_by_definition(store, f);
+        clean += expected != 0;
+        if (!hull.active()) continue;
+        if (hull.outer_sigma(f) != expected) {
+          ADD_FAILURE() << what << ", ids " << a << " " << b << " " << c << ": outer sigma " << hull.outer_sigma(f)
+                        << ", expected " << expected;
+          return clean;
+        }
+      }
+  if (hull.active()) EXPECT_EQ(hull.clean_facets(), clean) << what;
+  return clean;
+}
+
+PointCloud sphere_points(std::size_t n, const double (&axes)[3], std::uint64_t seed) {
+  drange::test::TestRandom random(seed);
+  PointCloud points{3, {}};
+  for (std::size_t i = 0; i < n; ++i) {
+    const double z = 2 * random.uniform() - 1, t = 2 * M_PI * random.uniform(), r = std::sqrt(1 - z * z);
+    points.coords.insert(points.coords.end(), {axes[0] * r * std::cos(t), axes[1] * r * std::sin(t), axes[2] * z});
+  }
+  return points;
+}
+
+TEST(HullTriangles, MatchTheDefinitionInGeneralPosition) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const PointCloud sphere = sphere_points(40, {1, 1, 1}, seed);
+    EXPECT_EQ(expect_3d_matches_definition(sphere, true, "sphere"), 2 * 40u - 4);
+    expect_3d_matches_definition(sphere_points(40, {1, 0.7, 0.4}, seed + 10), true, "ellipsoid");
+    // A sphere around a uniform interior, and a uniform cube (a small hull).
+    PointCloud mixed = sphere_points(30, {1, 1, 1}, seed + 20);
+    const PointCloud inside = drange::generate_points(drange::Distribution::Uniform, 20, 3, seed + 30);
+    for (const double c : inside.coords) mixed.coords.push_back(c - 0.5);
+    expect_3d_matches_definition(mixed, true, "sphere around uniform");
+    expect_3d_matches_definition(drange::generate_points(drange::Distribution::Uniform, 50, 3, seed), true, "uniform");
+  }
+}
+
+TEST(HullTriangles, GiveUpOrMatchOnCoplanarPoints) {
+  // A cube's corners (square faces: no clean facet), a grid, and a tetrahedron with a point on
+  // one face and one on an edge: either nothing is kept or every triple matches.
+  expect_3d_matches_definition(drange::generate_points(drange::Distribution::Grid, 8, 3, 1), false, "cube");
+  expect_3d_matches_definition(drange::generate_points(drange::Distribution::Grid, 27, 3, 1), false, "3 x 3 x 3 grid");
+  expect_3d_matches_definition(PointCloud{3, {0, 0, 0, 4, 0, 0, 0, 4, 0, 0, 0, 4, 1, 1, 0, 0, 2, 2, 1, 1, 1}}, false,
+                               "tetrahedron, points on a face and an edge");
+  // An octahedron: clean facets, but four of its points in each coordinate plane, which
+  // Quickhull's first facets meet (it may give up).
+  EXPECT_EQ(expect_3d_matches_definition(PointCloud{3, {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0.1, 0.2, 0.05}},
+                                         false, "octahedron"),
+            8u);
+}
+
+TEST(HullTriangles, AreBuiltOnlyWhenMostPointsAreOnTheHull) {
+  const PointStore uniform = store_of(drange::generate_points(drange::Distribution::Uniform, 20000, 3, 3), 128);
+  EXPECT_FALSE(HullTriangles(uniform).built());
+  const PointStore on_sphere = store_of(sphere_points(5000, {1, 0.8, 0.6}, 4), 128);
+  const HullTriangles hull(on_sphere);
+  EXPECT_TRUE(hull.built());
+  EXPECT_TRUE(hull.active());
+  EXPECT_EQ(hull.clean_facets(), 2 * 5000u - 4);
+  EXPECT_FALSE(HullTriangles(store_of(circle(500, 1.0, 5), 64)).built());  // 2D
+}
+
+TEST(HullTriangles, TheSearchFindsTheSameValidTriangulationWithFewerCalls) {
+  PointCloud ball = sphere_points(3000, {1, 0.7, 0.5}, 6);
+  const PointCloud inside = drange::generate_points(drange::Distribution::Uniform, 500, 3, 7);
+  for (const double c : inside.coords) ball.coords.push_back((c - 0.5) * 0.5);
+  for (const PointCloud& points : {sphere_points(3000, {1, 0.7, 0.5}, 5), ball}) {
+    const drange::Triangulation with = triangulate(points, "full", 1), without = triangulate(points, "no-hull", 1);
+    EXPECT_EQ(with.simplices, without.simplices);
+    EXPECT_EQ(with.neighbors, without.neighbors);
+    EXPECT_EQ(with.stats.hull_facets, without.stats.hull_facets);
+    EXPECT_LT(with.stats.search_calls, without.stats.search_calls);
+    EXPECT_TRUE(drange::check_triangulation(points, with.simplices).valid);
+    EXPECT_EQ(triangulate(points, "full", 2).simplices, with.simplices) << "2 threads";
   }
 }
 

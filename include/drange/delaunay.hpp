@@ -59,11 +59,12 @@ struct SearchOptions {
   bool node_slabs = true;
   // Which open facet is searched next (ours too: it changes the simplices' order, not the set).
   FacetOrder facet_order = FacetOrder::automatic;
-  // In 2D, find the convex hull's edges with no other point on their line beforehand (exactly,
-  // by a monotone chain), and skip the searches of their outer sides, which hold no point
-  // (src/delaunay/hull_edges.hpp). Pays on points in convex position (a circle, an ellipse),
-  // where half the facets are hull edges; kept only for hulls of many edges.
-  bool known_hull_edges = true;
+  // In 2D and 3D, find the convex hull's facets with no other point on their hyperplane
+  // beforehand (exactly: a monotone chain in 2D, Quickhull in 3D), and skip the searches of
+  // their outer sides, which hold no point (src/delaunay/known_hull.hpp). Pays on points in
+  // convex position (a circle, an ellipsoid, a convex scan), where a third to a half of the
+  // facets lie on the hull; kept only for large hulls.
+  bool known_hull_facets = true;
 };
 
 // Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order",

@@ -462,7 +462,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   static constexpr int kSeeds = D > 0 ? SeedMemory::per_point_in(D) : 0;  // per point; 0: the memory's
   const LeafBlocks& blocks_;  // points_.blocks
   const NodeSlabs* slabs_ = nullptr;  // points_.slabs, unless the options or the points have none
-  const HullEdges* hull_ = nullptr;   // points_.hull, in 2D when kept and the options ask for it
+  const KnownHull* hull_ = nullptr;   // points_.hull, when kept and the options ask for it
 
   // The exact stages' fixed-width cofactors: last, being large (the facet's part of the lifted
   // table: 21 KiB), apart from the members that every search reads (callgrind, 5D 5 000 points:
@@ -497,7 +497,7 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       seeds_(seeds),
       blocks_(points.blocks),
       slabs_(options.node_slabs && points.slabs.size() > 0 ? &points.slabs : nullptr),
-      hull_(options.known_hull_edges && points.hull.active() ? &points.hull : nullptr) {
+      hull_(options.known_hull_facets && points.hull.active() ? &points.hull : nullptr) {
   // seed<kSeeds>() and remember<kSeeds>() take the memory's layout on trust.
   if (kSeeds > 0 && seeds.seeds_per_point() != kSeeds)
     throw InternalError("facet search: a seed memory of " + std::to_string(seeds.seeds_per_point()) +
@@ -1659,8 +1659,8 @@ template <int D>
 std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, SearchCounters& counters) {
   const int d = dim();
   counters_ = &counters;
-  // A clean hull edge's outer side holds no point (hull_edges.hpp): nothing to search.
-  if (hull_ != nullptr && hull_->outer_sigma(facet[0], facet[1]) == sigma) return -1;
+  // A clean hull facet's outer side holds no point (known_hull.hpp): nothing to search.
+  if (hull_ != nullptr && hull_->outer_sigma(facet) == sigma) return -1;
   ball_nodes_ = 0;
   start_slab_trials();
   set_facet(facet, sigma);

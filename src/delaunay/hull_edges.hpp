@@ -1,5 +1,5 @@
 // delaunay/hull_edges.hpp: the clean edges of a planar point set's convex hull (ours,
-// SearchOptions::known_hull_edges).
+// SearchOptions::known_hull_facets).
 //
 // Why: a hull facet's search proves that its open side holds no point, and on points in convex
 // position (an ellipse, a circle) half the facets are hull edges, each searched along the

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "delaunay/hull_edges.hpp"
+#include "delaunay/known_hull.hpp"
 #include "delaunay/leaf_blocks.hpp"
 #include "delaunay/node_slabs.hpp"
 #include "delaunay/sphere_shell.hpp"
@@ -27,7 +27,7 @@ struct PointStore {
   spatial::KdTree tree;                    // over the ids
   LeafBlocks blocks;                       // the leaves' points in blocks, for the search's leaf scan
   NodeSlabs slabs;                         // thin slabs around the flat nodes' points (surfaces)
-  HullEdges hull;                          // 2D: the hull's clean edges, when it has many
+  KnownHull hull;                          // the hull's clean facets, when it has many (2D, 3D)
   // True when the coordinates were scaled below 1 in magnitude (prepare_points.cpp): then every
   // entry of the search's determinants is below 2^6 and no underflow can escape the error bounds
   // of its fast filter. False only for inputs spanning more than 2^1022 in magnitude, which

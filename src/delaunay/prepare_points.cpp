@@ -212,7 +212,8 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   store.blocks = LeafBlocks(store.tree, store.coords.data(), d, team);
   store.slabs = NodeSlabs(store.tree, store.coords.data(), d, team);
   store.shell = fit_sphere_shell(store.coords.data(), store.size, d, store.tree);
-  store.hull = HullEdges(store);
+  store.hull.edges = HullEdges(store);
+  store.hull.triangles = HullTriangles(store);
   const auto& order = store.tree.order();  // the rank of each id (PointStore::rank)
   store.input_index.resize(kept);
   for_ranges(order.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {
