@@ -1,4 +1,4 @@
-// The remembered ties (delaunay/known_ties.hpp): what a set answers, how it grows, and that a
+// The remembered ties (geometry/known_ties.hpp): what a set answers, how it grows, and that a
 // triangulation whose ties are exact but not dyadic is the same with them and without, with far
 // fewer exact evaluations.
 #include <gtest/gtest.h>
@@ -7,14 +7,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "delaunay/known_ties.hpp"
+#include "geometry/known_ties.hpp"
 #include "drange/check.hpp"
 #include "drange/delaunay.hpp"
 #include "oracle.hpp"
 
 namespace {
 
-using drange::engine::KnownTies;
+using drange::geometry::KnownTies;
 
 TEST(KnownTies, AnswersOnlyWhatWasRecorded) {
   KnownTies ties(3, 100);  // hyperplanes in 3D: three points define one

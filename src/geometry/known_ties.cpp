@@ -1,11 +1,11 @@
-// delaunay/known_ties.cpp: sets of points known to lie on one surface, found from their points.
-#include "delaunay/known_ties.hpp"
+// geometry/known_ties.cpp: sets of points known to lie on one surface, found from their points.
+#include "geometry/known_ties.hpp"
 
 #include <algorithm>
 
 #include "drange/errors.hpp"
 
-namespace drange::engine {
+namespace drange::geometry {
 
 KnownTies::KnownTies(int defining, std::int32_t points)
     : defining_(defining), points_(points), max_links_(kMinLinks + kLinksPerPoint * static_cast<std::size_t>(points)) {
@@ -71,4 +71,4 @@ void KnownTies::record(const std::int32_t* simplex, std::int32_t id) {
   if (static_cast<int>(sets_[static_cast<std::size_t>(set)].size()) < kMaxMembers) link(set, id);
 }
 
-}  // namespace drange::engine
+}  // namespace drange::geometry

@@ -1,4 +1,4 @@
-// delaunay/known_ties.hpp: points that exact evaluations proved to lie on one hyperplane, or on
+// geometry/known_ties.hpp: points that exact evaluations proved to lie on one hyperplane, or on
 // one sphere, remembered so that a later test of the same fact needs no exact arithmetic.
 //
 // Why. Where ties are exact but the coordinates are not dyadic, no floating-point filter can
@@ -27,7 +27,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace drange::engine {
+namespace drange::geometry {
 
 class KnownTies {
  public:
@@ -79,4 +79,4 @@ class KnownTies {
   std::vector<Link> links_;
 };
 
-}  // namespace drange::engine
+}  // namespace drange::geometry
