@@ -21,6 +21,9 @@
 #endif
 
 namespace drange::engine::lanes {
+// Internal linkage, as for the search kernel that includes this (search_kernel.hpp): the
+// compiler then inlines each function into its one caller where that pays.
+namespace {
 
 // Two doubles as one value (GCC and Clang vector extensions). Unaligned loads.
 using Pair = double __attribute__((vector_size(2 * sizeof(double))));
@@ -121,12 +124,9 @@ __attribute__((target("avx2"))) unsigned boxes_in_reach_avx2(const double* boxes
 #endif
 
 // The lanes of a block (transposed coordinates) whose squared distance to `centre` is not
-// above reach2: in_query's arithmetic, lane by lane. Empty lanes lie at infinity and never are.
+// above reach2, two lanes at a time: the region's arithmetic, lane by lane. Empty lanes lie at infinity and never are.
 template <int D>
-unsigned points_in_reach(const double* lanes, const double* centre, int d, double reach2, [[maybe_unused]] bool avx2) {
-#if DRANGE_AVX2_LANES
-  if (avx2) return points_in_reach_avx2<D>(lanes, centre, d, reach2);
-#endif
+unsigned points_in_reach_pairs(const double* lanes, const double* centre, int d, double reach2) {
   if constexpr (D > 0) d = D;
   Pair sum[kPairs];
   const Pair c0 = {centre[0], centre[0]};
@@ -149,10 +149,7 @@ unsigned points_in_reach(const double* lanes, const double* centre, int d, doubl
 // above reach2: prune's arithmetic, lane by lane (rounding is monotonic, so it bounds the
 // computed distance of every point in the box). Empty slots lie at infinity and never are.
 template <int D>
-unsigned boxes_in_reach(const double* boxes, const double* centre, int d, double reach2, [[maybe_unused]] bool avx2) {
-#if DRANGE_AVX2_LANES
-  if (avx2) return boxes_in_reach_avx2<D>(boxes, centre, d, reach2);
-#endif
+unsigned boxes_in_reach_pairs(const double* boxes, const double* centre, int d, double reach2) {
   if constexpr (D > 0) d = D;
   const Pair zero = {0.0, 0.0};
   Pair sum[kPairs];
@@ -172,4 +169,5 @@ unsigned boxes_in_reach(const double* boxes, const double* centre, int d, double
   return not_above(sum, reach2);
 }
 
+}  // namespace
 }  // namespace drange::engine::lanes

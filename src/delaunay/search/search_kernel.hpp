@@ -45,6 +45,10 @@
 #include "geometry/static_exactness.hpp"
 
 namespace drange::engine {
+// Internal linkage, as the header has one includer: the compiler may then inline the member
+// functions that have one caller (the walk's prune and leaf scans, set_candidate) and drop
+// their out-of-line copies, which it does not do for functions other units could call.
+namespace {
 
 template <int D>
 class SearchKernel final : public FacetSearch::Kernel {
@@ -77,7 +81,7 @@ class SearchKernel final : public FacetSearch::Kernel {
  private:
   int dim() const { return D > 0 ? D : d_; }
   void set_facet(const std::int32_t* facet, int sigma);
-  void set_candidate(std::int32_t id);
+  [[gnu::always_inline]] inline void set_candidate(std::int32_t id);
   // A new query region from sigma I(p, x) = w . r_x with errors error(j); false when w gives
   // none that can be trusted.
   template <class Error>
@@ -115,12 +119,9 @@ class SearchKernel final : public FacetSearch::Kernel {
   // puts on the closed side, found block by block lane by lane (most of a leaf lies on the
   // closed side of a facet).
   void scan_blocks_for_open_side(std::int32_t leaf, std::int32_t end);
-  unsigned points_in_reach(const double* lanes) const {
-    return lanes::points_in_reach<D>(lanes, region_.centre(), dim(), region_.reach2(), avx2_);
-  }
-  unsigned boxes_in_reach(const double* boxes) const {
-    return lanes::boxes_in_reach<D>(boxes, region_.centre(), dim(), region_.reach2(), avx2_);
-  }
+  // The lanes of a block in reach of the ball, and the blocks of a group (lanes.hpp).
+  [[gnu::always_inline]] inline unsigned points_in_reach(const double* lanes) const;
+  [[gnu::always_inline]] inline unsigned boxes_in_reach(const double* boxes) const;
   // The lanes of a block (its first `count`), and the blocks of a group, that the plane's
   // filter does not certify on the closed side.
   unsigned maybe_open_side(const double* lanes, int count) const;
@@ -405,6 +406,22 @@ void SearchKernel<D>::scan_blocks(std::int32_t leaf, std::int32_t end) {
 }
 
 template <int D>
+unsigned SearchKernel<D>::points_in_reach(const double* lanes) const {
+#if DRANGE_AVX2_LANES
+  if (avx2_) return lanes::points_in_reach_avx2<D>(lanes, region_.centre(), dim(), region_.reach2());
+#endif
+  return lanes::points_in_reach_pairs<D>(lanes, region_.centre(), dim(), region_.reach2());
+}
+
+template <int D>
+unsigned SearchKernel<D>::boxes_in_reach(const double* boxes) const {
+#if DRANGE_AVX2_LANES
+  if (avx2_) return lanes::boxes_in_reach_avx2<D>(boxes, region_.centre(), dim(), region_.reach2());
+#endif
+  return lanes::boxes_in_reach_pairs<D>(boxes, region_.centre(), dim(), region_.reach2());
+}
+
+template <int D>
 int SearchKernel<D>::best_lane(const double* lanes, unsigned in) const {
   const int d = dim();
   constexpr int kLanes = LeafBlocks::kLanes;
@@ -511,4 +528,5 @@ unsigned SearchKernel<D>::maybe_open_side(const double* lanes, int count) const 
   return ~lanes::certified_negative(o, o_abs, plane_.orient_gamma()) & all;
 }
 
+}  // namespace
 }  // namespace drange::engine

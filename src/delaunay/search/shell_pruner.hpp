@@ -23,7 +23,6 @@
 #include <cstdint>
 #include <limits>
 
-#include "delaunay/search/lanes.hpp"
 #include "delaunay/sphere_shell.hpp"
 #include "drange/points.hpp"
 #include "geometry/error_bound.hpp"
