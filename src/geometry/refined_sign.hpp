@@ -55,8 +55,8 @@ class RefinedCofactors {
   // The same in two steps, for many candidates of one facet: prepare_facet with the first
   // frame.k - 1 points (the minors of their rows, 1 << (frame.k + 1) of them, kept), then
   // prepare_candidate with the frame.k-th for each candidate (its cofactors from those minors:
-  // in 4D 20 double-double products instead of 70; 4D points rounded to 0.05 prepared 1.5
-  // candidates per facet). `frame` the same throughout.
+  // in 4D 20 double-double products instead of 70; on 4D points rounded to 0.05 a facet
+  // prepares more than one candidate on average). `frame` the same throughout.
   void prepare_facet(const Frame& frame, const double* const* points);
   void prepare_candidate(const Frame& frame, const double* candidate);
   // The same for orientation's determinant (frame.k rows of differences, 2 <= frame.k <=
