@@ -413,9 +413,9 @@ TEST(ClipCells, DuplicatesShareTheirOriginalsCell) {
   expect_valid(points, diagram, cells, "duplicates");
 }
 
-// Regression (review): corners a rounding apart in the cell's own frame became one double
-// far from the origin and were listed two or three times. Every corner of a cell is now
-// distinct, and every face loop has at least 3 corners and no zero-length edge.
+// Corners a rounding apart in the cell's own frame can become one double far from the origin,
+// and must then be listed once: every corner of a cell is distinct, and every face loop has at
+// least 3 corners and no zero-length edge.
 void expect_distinct_corners(const PointCloud& points) {
   const Voronoi diagram = voronoi(points);
   const ClippedCells cells = clip_cells(points, diagram, default_clip_box(points));

@@ -168,8 +168,9 @@ TEST(DelaunayOracle, DegenerateTinyInputsMatchPerturbedBruteForce) {
       {"square and centre", cloud(2, {0, 0, 1, 0, 0, 1, 1, 1, 0.5, 0.5})},
       {"cube corners and centre", cloud(3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1, 0.5, 0.5, 0.5})},
       {"collinear on the hull", cloud(2, {0, 0, 1, 0, 2, 0, 3, 0, 1.5, 1, 1.5, -2})},
-      // Regression: products underflowing to zero inside the filter, then multiplied by 1e100,
-      // once gave 8 overlapping triangles here (an unscaled input: it spans 5e-324 to 1e100).
+      // Products underflowing to zero inside the filter, then multiplied by 1e100: a filter
+      // blind to underflow gives overlapping triangles here (an unscaled input: it spans
+      // 5e-324 to 1e100).
       {"underflowing products", cloud(2, {0, 0, 1e-135, 0, 1, 1e-190, 1e100, 1e-130, -1e100, 5e-324})},
       // Scaled inputs (below 1 in magnitude) whose facet and candidate minors underflow inside
       // the cluster: the search reads no floating-point flag (kUnderflowError).
@@ -393,7 +394,8 @@ TEST(DelaunayRobustness, HardFamilies) {
     cases.emplace_back("magnitudes 1e-300 to 1e300", c);
   }
   {
-    // Regression: every coordinate below 2^-1022 once made the scale factor infinite (SIGFPE).
+    // Every coordinate below 2^-1022: the scale factor 2^-exponent is then infinite, and the
+    // values must be shifted instead (a product with it traps with SIGFPE).
     PointCloud c{2, {1e-310, 0, 0, 1e-310, 0, 0}};
     for (int i = 0; i < 40; ++i) c.coords.insert(c.coords.end(), {1e-310 * u(rng), 1e-310 * u(rng)});
     cases.emplace_back("all coordinates denormal", c);
@@ -567,7 +569,7 @@ TEST(DelaunayVariants, PruningAndOrderingReduceTheWork) {
 TEST(DelaunayVariants, GridHullFacetsPruneTheirHyperplane) {
   // The hull facets of a grid have every point of their face on their hyperplane; the search
   // prunes those kd-tree nodes only by proving their orientation exactly zero. The work counter
-  // (deterministic, not a time) was 65 calls per simplex on this grid without that proof.
+  // (deterministic, not a time) is more than twice the bound on this grid without that proof.
   const Triangulation t = drange::delaunay(grid(3, 20));
   EXPECT_LT(t.stats.calls_per_simplex(), 30.0);
 }
@@ -593,9 +595,10 @@ TEST(DelaunayVariants, PlateauFacetsPruneTheirFlatSide) {
     }
     const Triangulation t = drange::delaunay(terrain);
     expect_valid(terrain, t, "plateau flat on axis " + std::to_string(flat));
-    // Points tested per simplex (a deterministic work counter, not a time): 3.9 to 4.4 with the
-    // flat axis, 12.5 to 14.5 without it (2026-11-26), when every search from a plateau facet
-    // before its first candidate visited the whole plateau; the gap grows with the plateau.
+    // Points tested per simplex (a deterministic work counter, not a time): well below the
+    // bound with the flat axis, about three times as many without it, when every search from a
+    // plateau facet visits the whole plateau before its first candidate; the gap grows with
+    // the plateau.
     EXPECT_LT(double(t.stats.points_tested) / double(t.stats.simplices), 8.0) << "flat axis " << flat;
   }
 }
@@ -617,8 +620,9 @@ TEST(DelaunayVariants, LongSearchesOnACylinderPruneTheClosedSide) {
   drange::Options no_prune;
   no_prune.search = drange::search_variant("no-prune");
   EXPECT_EQ(canonical(t), canonical(drange::delaunay(cylinder, no_prune)));
-  // Nodes entered per simplex (a deterministic work counter, not a time): 117 with the closed
-  // side pruned only before the first ball, 93 with it pruned in long searches too (2026-11-27).
+  // Nodes entered per simplex (a deterministic work counter, not a time): the bound lies between
+  // the count with the closed side pruned only before the first ball and the lower one with it
+  // pruned in long searches too.
   EXPECT_LT(t.stats.calls_per_simplex(), 105.0);
 }
 
@@ -640,25 +644,25 @@ TEST(DelaunayVariants, TheBestPointOfABlockIsTriedFirstIn2D) {
   drange::Options no_prune;
   no_prune.search = drange::search_variant("no-prune");
   EXPECT_EQ(canonical(t), canonical(drange::delaunay(circles, no_prune)));
-  // Candidates per simplex (a deterministic work counter, not a time): 5.26 in index order,
-  // 3.12 with the best first (2026-11-27, one seed per point).
+  // Candidates per simplex (a deterministic work counter, not a time): the bound lies between
+  // the count in index order and the lower one with the best first (one seed per point).
   EXPECT_LT(double(t.stats.candidates) / double(t.stats.simplices), 4.0);
 }
 
 TEST(DelaunayVariants, CandidatesOnADecimalLatticePlaneGetABall) {
   // Points rounded to multiples of 0.04, a CSV file's kind of coordinates: four of them on one
   // lattice plane and one circle are within rounding of both in binary, so the candidate's
-  // sphere through them is computed from noise in doubles and had no ball; each such candidate
-  // sent the search through every point on the facet's open side. The double-double cofactors
-  // give it its ball.
+  // sphere through them is computed from noise in doubles and gives no ball; each such candidate
+  // would send the search through every point on the facet's open side. The double-double
+  // cofactors give it its ball.
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   PointCloud points{3, {}};
   for (int i = 0; i < 5000 * 3; ++i) points.coords.push_back(std::round(u(rng) * 25) / 25);
   const Triangulation t = drange::delaunay(points);
   expect_valid(points, t, "points rounded to 0.04");
-  // Points tested per simplex (a deterministic work counter, not a time): 4.63 with the
-  // double-double ball, 23.5 without it (2026-11-26).
+  // Points tested per simplex (a deterministic work counter, not a time): well below the bound
+  // with the double-double ball, several times above it without.
   EXPECT_LT(double(t.stats.points_tested) / double(t.stats.simplices), 8.0);
 }
 

@@ -186,8 +186,8 @@ TEST(NpyRead, MillionPointsIn3DAreFast) {
   const PointCloud cloud = parse(bytes);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(cloud.coords, values);
-  // About 0.04 s on the project machine; the loose bound (a busy machine is slower) only
-  // catches a slow path, such as reading the data element by element from a stream.
+  // A small fraction of the bound on an idle machine; the loose bound (a busy machine is
+  // slower) only catches a slow path, such as reading the data element by element from a stream.
   EXPECT_LT(seconds, 1.5);
 }
 

@@ -91,8 +91,8 @@ TEST(PredicateTest, IntegerPointsWithTiesAgreeWithRationalReference) {
 
 // Random points on an axis-parallel hyperplane (the same coordinate, not a small dyadic one,
 // on one axis): every orientation is exactly zero, decided without GMP (a planar set embedded
-// in 3D: a circle with its sphere's poles took 3.6 M exact evaluations), and points off that
-// hyperplane keep their signs.
+// in 3D, as a circle with its sphere's poles, would otherwise take millions of exact
+// evaluations), and points off that hyperplane keep their signs.
 TEST(PredicateTest, PointsOnAnAxisParallelHyperplaneAreFlatWithoutGmp) {
   for (int d = 3; d <= 6; ++d) {
     for (std::uint64_t seed = 1; seed <= 30; ++seed) {
@@ -463,8 +463,8 @@ TEST(PredicateTest, IntegerOrientationsIn4DTo7DAreDecidedByTheFilter) {
   EXPECT_GT(flat, 100) << "most of these small simplices should be flat";
 }
 
-// Regression: both products of a 2x2 minor underflow to zero (1e-135 * 1e-190), and a later
-// entry of 1e100 multiplies the lost minor. The filter once certified the wrong sign.
+// Both products of a 2x2 minor underflow to zero (1e-135 * 1e-190), and a later entry of
+// 1e100 multiplies the lost minor: a filter blind to underflow certifies the wrong sign.
 TEST(Predicates, UnderflowInsideTheExpansionIsNotCertified) {
   const double a[2] = {0, 0}, b[2] = {1e-135, 0}, c[2] = {1, 1e-190}, q[2] = {1e100, 1e-130};
   const std::vector<const double*> simplex = {a, b, c};

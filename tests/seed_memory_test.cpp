@@ -39,8 +39,8 @@ TEST(SeedMemory, KeepsTheMostRecentApexFirst) {
   EXPECT_EQ(seeds_of(memory, 2), (std::vector<std::int32_t>{-1, -1}));
 }
 
-// The same apex found again must not push out the other seed (it did before the twenty-ninth
-// round: a point's two seeds were then often one apex twice).
+// The same apex found again must not push out the other seed (shifting it in again would often
+// leave a point's two seeds one apex twice).
 TEST(SeedMemory, KeepsItsSeedsDistinct) {
   SeedMemory memory(2, 4);
   memory.remember(0, 5);

@@ -184,7 +184,7 @@ TEST(SphereShell, BuiltForPointsNearASphereOnly) {
   EXPECT_FALSE(store_of(drange::generate_points(Distribution::Grid, 512, 3, 1)).shell.active());
   // Nor a 4D or 5D grid, whose squared distances from its centre fall on few values each held
   // by many points, like concentric spheres, but whose smallest such sphere holds the grid's
-  // middle: the shell only cost there (a 10^4 grid of 0.1 k, time_search 1.05 -> 0.85 s).
+  // middle: the shell only costs time there.
   EXPECT_FALSE(store_of(drange::generate_points(Distribution::Grid, 1296, 4, 1)).shell.active());
   PointCloud decimal_grid = drange::generate_points(Distribution::Grid, 10000, 4, 1);
   for (double& x : decimal_grid.coords) x /= 10;  // as read from "0.3": the nearest double
@@ -235,7 +235,7 @@ TEST(SphereShell, SpheresAboutSeveralCentres) {
 
 TEST(SphereShell, NoSpheresFromTheCapsOfASmoothSurface) {
   // Near every point of an ellipsoid a patch lies within 2^-10 of its osculating sphere; those
-  // caps are no spheres of the input (228 of them on 80 000 points before the thirtieth round).
+  // caps are no spheres of the input (a looser test would take hundreds of them on a large one).
   drange::test::TestRandom random(90);
   PointCloud ellipsoid{3, {}};
   for (int i = 0; i < 20000; ++i) {
@@ -670,41 +670,37 @@ TEST(SphereShell, ConesProveTheHullFacetsOfASphereAroundABall) {
   EXPECT_EQ(canonical(with), canonical(triangulate(points, "no-shell")));
   const drange::CheckReport report = drange::check_triangulation(points, with.simplices);
   EXPECT_TRUE(report.valid) << (report.problems.empty() ? "" : report.problems.front());
-  // Nodes entered per simplex (a deterministic work counter, not a time): 12.94 with the cones
-  // of the mixed nodes, 18.14 without them (2026-11-27).
+  // Nodes entered per simplex (a deterministic work counter, not a time): the bound lies between
+  // the count with the cones of the mixed nodes and the higher one without them.
   EXPECT_LT(with.stats.calls_per_simplex(), 15.0);
 }
 
 TEST(SphereShell, CutsTheWorkOnSpheres) {
   // Counters, not times: without the shell every search scans nearly every point, and the
   // double filter cannot decide the points near the candidate's sphere (the double-double
-  // stage does, geometry/refined_sign.hpp; before it, GMP did). With the shell, the leaves' offset order and the
-  // nodes' cones leave few points and nodes: on these inputs, 36.6 points tested and 16.9
-  // nodes entered per triangle against 1 688 and 96.7 (before the cones and the offset order:
-  // 388 and 48.5; against 4 021 and 272 before long searches pruned the closed side,
-  // 2026-11-27), and in 3D 37.1 points per tetrahedron against 1 976 (then 504).
+  // stage does, geometry/refined_sign.hpp). With the shell, the leaves' offset order and the
+  // nodes' cones leave few points and nodes: on these inputs, per triangle, tens of times fewer
+  // points tested and several times fewer nodes entered than without, and in 3D tens of times
+  // fewer points tested per tetrahedron.
   for (int d : {2, 3}) {
     const PointCloud points = sphere(d == 2 ? 8000 : 2000, d, 31);
     const drange::Statistics with = triangulate(points, "full").stats, without = triangulate(points, "no-shell").stats;
     EXPECT_LT(with.points_tested * (d == 2 ? 20 : 5), without.points_tested) << "d=" << d;
     if (d == 2) EXPECT_LT(with.search_calls * 4, without.search_calls);
-    // Within rounding of one sphere but not exactly on it: GMP is never needed, with the shell
-    // or without (before the double-double stage, without it: 1.35M of the 11.8M points tested
-    // in 3D went to GMP; now 6).
+    // Within rounding of one sphere but not exactly on it: GMP is hardly ever needed, with the
+    // shell or without, as the double-double stage decides those tests.
     EXPECT_LT(with.exact_fallbacks * 1000, with.points_tested) << "d=" << d;
     EXPECT_LT(without.exact_fallbacks * 1000, without.points_tested) << "d=" << d;
   }
   // Two concentric spheres: the inner one's ball is a cell of cospherical points, as above
-  // (points tested with the shell and without: 2D 0.28M and 5.97M, 3D 0.20M and 2.91M,
-  // 2026-11-27; before the shell took concentric spheres, the same).
+  // (with the shell, an order of magnitude fewer points tested than without).
   for (int d : {2, 3}) {
     const PointCloud points = concentric(d == 2 ? 4000 : 1000, d, 42, {1.0, 0.5});
     const drange::Statistics with = triangulate(points, "full").stats, without = triangulate(points, "no-shell").stats;
     EXPECT_LT(with.points_tested * 3, without.points_tested) << "d=" << d;
   }
   // Bubbles: each bubble's ball is a cell of cospherical points; with a sphere per bubble, as
-  // with one sphere (points tested with the shell and without: 2D 0.19M and 1.41M, 3D 0.44M
-  // and 4.62M).
+  // with one sphere (with the shell, several times fewer points tested than without).
   for (int d : {2, 3}) {
     const PointCloud points = bubbles(10, 400, d, 90);
     const drange::Statistics with = triangulate(points, "full").stats, without = triangulate(points, "no-shell").stats;

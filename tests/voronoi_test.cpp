@@ -298,9 +298,9 @@ double hull_volume(const std::vector<double>& corners, int d) {
   return total.get_d() / factorial;
 }
 
-// Regression (review): on nearly cospherical input in 4D the flag decomposition's pieces are
-// huge and cancel; in double some cells were off by several percent. Every bounded cell's
-// volume must match the exact volume of the hull of its vertices.
+// On nearly cospherical input in 4D the flag decomposition's pieces are huge and cancel; in
+// double some cells would be off by several percent. Every bounded cell's volume must match
+// the exact volume of the hull of its vertices.
 TEST(Voronoi, VolumesOfNearlyCosphericalCellsIn4D) {
   // Lattice points of a 4D sphere, scaled by 1e-3 and moved by -7: rounding makes them
   // nearly, not exactly, cospherical.

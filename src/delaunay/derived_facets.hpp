@@ -22,12 +22,12 @@ inline void derive_in(const std::int32_t* facet, int sigma, std::int32_t apex, i
   engine::simplex_other_facets(facet, d, apex, sigma < 0, block, block + d * d);
   for (int f = 0; f < d; ++f) block[d * d + d + f] = static_cast<std::int32_t>(engine::facet_hash(block + f * d, d));
 }
-// Not inlined: inlined into the driver's serial loop (as a header function it was), the 3D 1M
-// search was 8% slower (6.10 -> 6.64 s, best of 3, one thread); as a call, as before.
+// Not inlined: inlined into the driver's serial loop, it made the whole search measurably
+// slower (3D, one thread), so it stays a call.
 [[gnu::noinline]] inline void derive_other_facets(const std::int32_t* facet, int sigma, std::int32_t apex, int d, std::int32_t* block) {
   // With d a constant (the search kernels' dimensions) the compiler unrolls the short loops.
-  // From 4D too: callgrind, 4D 20 000 points, this function with its callees 329M -> 183M
-  // instructions (all of the run -2.5%; 5D 3 000 points -2.5%).
+  // From 4D too: the unrolled cases take far fewer instructions than the generic loop, enough
+  // to show in the whole run.
   switch (d) {
     case 2: derive_in(facet, sigma, apex, 2, block); return;
     case 3: derive_in(facet, sigma, apex, 3, block); return;

@@ -127,7 +127,7 @@ std::vector<std::pair<std::int64_t, std::int32_t>> hull_candidates(const PointSt
       if (!inside(points.point(id))) candidates.emplace_back(points.rank(id), id);
   }
   // Into rank order: many candidates (points in convex position) by a scatter over all ranks,
-  // which costs a pass over n ints, few by sorting (circle, 200 000 points: 9.8 -> 1.3 ms).
+  // which costs a pass over n ints, few by sorting, which then costs much less than that pass.
   const auto n = static_cast<std::size_t>(points.size);
   if (candidates.size() * 8 < n) {
     std::sort(candidates.begin(), candidates.end());
@@ -153,7 +153,7 @@ HullEdges::HullEdges(const PointStore& points, std::size_t least_edges, std::siz
   // `candidates`: the lower hull left to right, then the upper hull right to left, each with
   // the inside on its left. A point certainly above the line from the first to the last is no
   // vertex of the lower hull, and one certainly below none of the upper, so each chain skips
-  // them (circle, 200 000 points: the hull 12.8 -> 11.8 ms).
+  // them and spares their orientations.
   const double* first = point(0);
   const double* last = point(candidates.size() - 1);
   const auto chain = [&](bool lower) {

@@ -3,8 +3,8 @@
 //
 // Why: a hull facet's search proves that its open side holds no point, and on points in convex
 // position (an ellipse, a circle) half the facets are hull edges, each searched along the
-// boundary, where every kd-tree box near the edge reaches across its line: 35% to 45% of the
-// search time on 20 000 points on a circle or an ellipse. In the plane the hull is cheap to
+// boundary, where every kd-tree box near the edge reaches across its line: a large share of the
+// search time on points on a circle or an ellipse. In the plane the hull is cheap to
 // know beforehand, exactly: Andrew's monotone chain over the points in lexicographic order (the
 // engine's ranks), with exact orientations.
 //

@@ -114,7 +114,7 @@ class Quickhull {
   const PointStore& points_;
   std::vector<Facet> facets_;
   bool failed_ = false;
-  // add_point's marks, kept across its calls (clearing them per point was quadratic).
+  // add_point's marks, kept across its calls (clearing them per point would be quadratic).
   std::uint32_t round_ = 0;
   std::vector<std::uint32_t> seen_;
   std::vector<char> visible_;
@@ -236,8 +236,8 @@ bool Quickhull::add_point(std::int32_t start) {
       if (!hidden(g)) continue;
       const std::int32_t u = facets_[static_cast<std::size_t>(f)].v[i], v = facets_[static_cast<std::size_t>(f)].v[(i + 1) % 3];
       // In the place of a facet that died at an earlier point, when there is one: the list
-      // stays about as long as the hull (a growing one was 9% of an ellipsoid's run, in
-      // copies and page faults).
+      // stays about as long as the hull (a growing one costs copies and page faults that show
+      // on an ellipsoid's run).
       std::int32_t n = static_cast<std::int32_t>(facets_.size());
       if (!free_.empty()) {
         n = free_.back();

@@ -3,8 +3,8 @@
 //
 // Why: on points sampled from a convex surface (an ellipsoid, a scan of a convex object) a
 // third of the facets lie on the hull, and each of their searches proves the open side empty
-// along a boundary that every kd-tree box near the facet crosses: 45% of the search time on
-// 20 000 points on an ellipsoid.
+// along a boundary that every kd-tree box near the facet crosses: a large share of the search
+// time on points on an ellipsoid.
 //
 // How: Quickhull (Barber, Dobkin and Huhdanpaa) with exact orientations, over the points that
 // may be on the hull. A hull facet is clean when no other point lies on its plane: every other
@@ -33,8 +33,8 @@ class HullTriangles {
   // The clean hull facets of `points` (3D; any other dimension keeps none). `sample` points
   // (spread over the ids) are tried first; the full hull is built only when more than three in
   // four of them are hull vertices of the sample (a torus: about half, and its hull facets are
-  // 4% of its search), and kept when it has at least `least_facets` clean facets (the tests
-  // lower both).
+  // a small part of its search), and kept when it has at least `least_facets` clean facets
+  // (the tests lower both).
   explicit HullTriangles(const PointStore& points, std::size_t sample = kSample, std::size_t least_facets = kLeastFacets);
 
   // The sign sigma for which the facet (f0 < f1 < f2)'s open side, sigma O(x) > 0 with

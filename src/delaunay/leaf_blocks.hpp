@@ -27,9 +27,8 @@ class Team;
 // doubles (vector instructions) that give bit masks. A copy of the coordinates, O(n d)
 // doubles, built once (prepare_points) and shared by every search thread.
 //
-// In every dimension since the lane tests give masks (facet_search.cpp, scan_blocks). Before,
-// with a branch per lane, the blocks lost in 2D and 3D (2D 1M points, time_search 0.87 ->
-// 1.02 s; 3D 200k 1.39 -> 1.47 s), where the balls are small against a leaf.
+// In every dimension, because the lane tests give masks (facet_search.cpp, scan_blocks): with a
+// branch per lane, the blocks lose in 2D and 3D, where the balls are small against a leaf.
 class LeafBlocks {
  public:
   static constexpr int kLanes = spatial::KdTree::kOrderLeafSize;

@@ -238,8 +238,9 @@ void SimplexLocator::find(PointsView queries, std::int32_t* out, int threads) co
   // Each answer depends on its query alone (the walk starts at the query's nearest vertex, and
   // its random sequence is seeded by the coordinates), so neither the order in which the
   // queries are walked nor their split among the threads changes the output. Many queries are
-  // walked in Z order (1M random queries in 1M 2D points, one thread: 2.82 s in input order,
-  // 0.86 s in Z order with the sort); a chunk is long enough that taking it costs nothing next to its walks.
+  // walked in Z order, so that consecutive walks touch nearby simplices (on random queries,
+  // several times faster than input order, the sort included); a chunk is long enough that
+  // taking it costs nothing next to its walks.
   constexpr std::size_t kChunk = 4096;
   const std::vector<std::int32_t> order = queries.n > kChunk ? spatial_order(queries) : std::vector<std::int32_t>{};
   const std::size_t chunks = (queries.n + kChunk - 1) / kChunk;

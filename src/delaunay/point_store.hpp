@@ -21,7 +21,7 @@ struct PointStore {
   int dim = 0;
   std::int32_t size = 0;
   // The arrays are filled in full by prepare_points, on its threads: left uninitialised until
-  // then, their pages are first touched there (2D 1M: 20 MB not zeroed by one thread first).
+  // then, their pages are first touched there (not zeroed by one thread first).
   util::UninitializedVector<double> coords;             // size * dim, in id order
   util::UninitializedVector<std::int32_t> input_index;  // input index of each id (n < 2^31)
   spatial::KdTree tree;                    // over the ids
@@ -44,8 +44,8 @@ struct PointStore {
 
   const double* point(std::int32_t id) const { return coords.data() + static_cast<std::size_t>(id) * static_cast<std::size_t>(dim); }
   // The lexicographic rank of id: the tree was built over the distinct points in that order,
-  // so its order() is the rank of each id, and no array of its own is kept (2D 1M: 8 MB less,
-  // and a pass of page faults and gathers less in prepare_points).
+  // so its order() is the rank of each id, and no array of its own is kept (n ints less, and a
+  // pass of page faults and gathers less in prepare_points).
   std::int64_t rank(std::int32_t id) const { return tree.order()[static_cast<std::size_t>(id)]; }
 };
 

@@ -62,8 +62,7 @@ bool scale_by_power_of_two(util::UninitializedVector<double>& coords, Team& team
   if (std::ldexp(smallest, -exponent) < std::numeric_limits<double>::min()) return false;  // would lose the smallest
   // Every scaled value is now a normal double, so multiplying by 2^-exponent is exact; when
   // that factor is not a double itself (inputs below 2^-1022), ldexp shifts each value exactly.
-  // (2D 1M points, one thread: the scaling and mark_dyadic together took 28.6 ms with ldexp
-  // for every value, 18.8 ms with the product.)
+  // (The product is measurably cheaper than ldexp on every value.)
   const double factor = std::ldexp(1.0, -exponent);
   const bool multiply = std::isfinite(factor) && factor >= std::numeric_limits<double>::min();
   for_ranges(coords.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {

@@ -5,8 +5,8 @@
 //
 // One memory serves every search thread. Per-thread memories each saw only the searches of
 // their own thread: with 2 threads taking alternate runs of facets, the neighbours found by
-// the other thread were missing, and 2D 1M points tested 36% more points per simplex than on
-// one thread. The entries are relaxed atomics: a seed is only a hint (the search's result
+// the other thread were missing, and the searches tested markedly more points per simplex than
+// on one thread. The entries are relaxed atomics: a seed is only a hint (the search's result
 // never depends on it), so a thread may read a seed another is replacing, and any point id it
 // reads is a valid one. On x86 relaxed loads and stores are plain moves.
 #pragma once
@@ -22,16 +22,12 @@ namespace drange::engine {
 
 class SeedMemory {
  public:
-  // Seeds kept per point in dimension d. Two from 3D on (one or four were slower, three within
-  // the noise: tenth and eleventh rounds). One in 2D since the twenty-eighth round, where the
-  // search tries the best point of a leaf block first, which finds in the walk what a second
-  // seed offered: 2D 1M time_search 0.840 -> 0.801 s (medians of 5 interleaved runs, every
-  // pair faster; points tested per triangle 2.56 -> 2.58; callgrind 2D 100k -1.2%; 4 MB less),
-  // while three or four from 3D on stayed level (3D 1M, 4D 100k, 5D 20k, three interleaved
-  // runs). Three distinct seeds (twenty-ninth round) took fewer candidates again but were not
-  // faster (callgrind 3D -0.6%, 4D -0.2%, 5D +0.25%; time_search level or slower).
+  // Seeds kept per point in dimension d. Two from 3D on: one or four are slower, and three
+  // distinct seeds take fewer candidates but are no faster. One in 2D, where the search tries
+  // the best point of a leaf block first and so finds in the walk what a second seed would
+  // offer: one seed is faster there, and smaller.
   // The searches compiled for one dimension pass it as K to seed() and remember(): with the
-  // count a variable, its loops and strides cost 3D 20k 1.1% more instructions (callgrind).
+  // count a variable, its loops and strides cost more instructions.
   static constexpr int per_point_in(int d) { return d == 2 ? 1 : 2; }
 
   SeedMemory(std::int32_t points, int d)
@@ -52,19 +48,17 @@ class SeedMemory {
   }
   // Records `apex` as the most recent seed of point `id`: moved to the front if it is a seed
   // already, so that a point keeps distinct seeds. Consecutive searches around a point often
-  // find the same apex (the facets of one ring around an edge), and shifting it in again had
-  // pushed out the one other seed: 3D 216k candidates per simplex 2.50 -> 2.36, time_search
-  // 1.214 -> 1.142 s (medians of 5 interleaved runs); 4D 100k 2.72 -> 2.60, 3.900 -> 3.721 s
-  // (medians of 3); 5D 20k and 3D 1M level; callgrind 3D 50k -1.9%, 4D 20k -1.4%, 5D 5k -1.1%.
+  // find the same apex (the facets of one ring around an edge), and shifting it in again would
+  // push out the one other seed: moving it to the front gives fewer candidates per simplex and
+  // faster searches in 3D and 4D.
   template <int K = 0>
   void remember(std::int32_t id, std::int32_t apex) {
     const int per_point = K > 0 ? K : per_point_;
     std::atomic<std::int32_t>* seeds = &seeds_[static_cast<std::size_t>(id) * static_cast<std::size_t>(per_point)];
     // A memory that holds the apex first already is not written (as after a search that this
-    // point's latest seed decided). In 2D skipping that store saved 2% (2D 1M time_search 0.750
-    // -> 0.734 s, medians of 8 interleaved runs; 2 threads 0.444 -> 0.437 s, medians of 5; 3D
-    // 216k on 2 threads level), likely as fewer cache lines are dirtied, and fewer must move
-    // between the two threads' caches.
+    // point's latest seed decided). Skipping that store is measurably faster in 2D, on one
+    // thread and on two, likely as fewer cache lines are dirtied, and fewer must move between
+    // the threads' caches.
     int last = per_point - 1;  // the seed that leaves (none if apex is one)
     for (int k = 0; k < per_point; ++k)
       if (seeds[k].load(std::memory_order_relaxed) == apex) {

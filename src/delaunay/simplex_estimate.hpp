@@ -2,11 +2,11 @@
 // how many there can be at most.
 //
 // The simplices and their neighbours are appended to two vectors. Growing a vector by doubling
-// copies it once more and, for the moment of the copy, holds the old and the new block: the
-// peak memory of high dimensions was set there (8D 300 points: 405 MiB, against 365 with room
-// made up front). Making room only takes address space: the pages are committed as simplices
-// are written, so an estimate that is too high costs no memory, and one that is too low only
-// lets the vectors grow as before.
+// copies it once more and, for the moment of the copy, holds the old and the new block: in high
+// dimensions that moment sets the peak memory, and room made up front lowers it. Making room
+// only takes address space: the pages are committed as simplices are written, so an estimate
+// that is too high costs no memory, and one that is too low only lets the vectors grow by
+// doubling past it.
 #pragma once
 
 #include <unistd.h>

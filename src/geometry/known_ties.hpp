@@ -34,9 +34,8 @@ class KnownTies {
   // A set stops growing here, which bounds a lookup's binary searches.
   static constexpr int kMaxMembers = 1024;
   // The most links (a point in a set) before all is forgotten: one per point, and some to
-  // start with, so that the memory stays small beside the triangulation's own (a cylindrical
-  // grid of 20 000 points, before orientations had a double-double stage: 233 816 exact
-  // evaluations; 228 276 with twice as many links, at 2.4 MiB more peak memory).
+  // start with, so that the memory stays small beside the triangulation's own (on a cylindrical
+  // grid, twice as many links spared few exact evaluations, for more peak memory).
   static constexpr std::size_t kMinLinks = std::size_t{1} << 15;
   static constexpr std::size_t kLinksPerPoint = 1;
 
@@ -62,15 +61,15 @@ class KnownTies {
   int defining_;
   std::int32_t points_;
   // The last simplex looked up and its set (-1: none), until the next record: a search asks
-  // about one facet (and candidate) many times (100 rings of a cylinder: the lookups were 15% of
-  // the time).
+  // about one facet (and candidate) many times (on the rings of a cylinder, repeated lookups
+  // were a visible share of the time).
   mutable std::vector<std::int32_t> last_simplex_;
   mutable std::int32_t last_set_ = -1;
   std::size_t max_links_;
   std::vector<std::vector<std::int32_t>> sets_;  // each sorted
   // Per set, a bit per member (signature_bit): a set whose signature lacks a point's bit does
   // not hold it, so find() skips most of a point's sets without a binary search (a point of a
-  // 5D grid is in dozens of sets; find took 9% of a 4^5 grid of 0.1 k).
+  // 5D grid is in dozens of sets, and find showed in a 5D grid's profile).
   std::vector<std::uint64_t> signatures_;
   static std::uint64_t signature_bit(std::int32_t id) {
     return std::uint64_t{1} << ((static_cast<std::uint32_t>(id) * 0x9E3779B9u) >> 26);

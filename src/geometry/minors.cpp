@@ -30,7 +30,7 @@ const SubsetTable& SubsetTable::get(int columns) {
   if (columns < 0 || columns > kMaxColumns) throw InternalError("SubsetTable: too many columns");
   // Each column count's table is built on its first use, thread-safely: a 2D run needs the
   // 3-column table (a few hundred bytes), not all of them (241 kB, most of it the 12-column
-  // one: a quarter of drange's own heap on 20 000 points).
+  // one: a large share of a small run's own heap).
   static std::array<std::once_flag, kMaxColumns + 1> once;
   static std::array<std::unique_ptr<const SubsetTable>, kMaxColumns + 1> tables;
   const auto at = static_cast<std::size_t>(columns);

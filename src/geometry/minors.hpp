@@ -69,7 +69,7 @@ class MinorTable {
   void set_row(int r, const double* row) {
     // The terms in a flat table (SubsetTable::terms_of_size): the same products, summed in the
     // same order, as walking each subset's bits (v - term is v + (-term) exactly), without
-    // the bit loop and the sign branch (8D 150 points: time_search 3.63 -> 3.27 s).
+    // the bit loop and the sign branch, which dominate the search in high dimensions.
     double row_abs[SubsetTable::kMaxColumns];
     for (int j = 0; j < columns(); ++j) row_abs[j] = std::fabs(row[j]);
     const SubsetTable::Term* t = subsets_->terms_of_size(r + 1).data();
@@ -89,8 +89,8 @@ class MinorTable {
   // set_row for a table of exactly C columns, with the Laplace terms laid out at compile time
   // (the kd-tree search's facets, d = 2 to 8: C = d + 1): no term table to read, the cofactor
   // signs known, and each minor's address a constant. The same products are summed in the same
-  // order as by set_row, so every minor is the same double. (Callgrind, 5D 3 000 points: the
-  // generic loop took 13.4 instructions per term, and a sixth of the run.)
+  // order as by set_row, so every minor is the same double. (The generic loop spends several
+  // times the instructions per term, a visible share of a 5D run.)
   template <int C>
   void set_row_fixed(int r, const double* row) {
     double x[C], x_abs[C];  // locals: the stores to value_ below cannot change them
@@ -144,10 +144,9 @@ class MinorTable {
 };
 
 // The number of set bits (the columns of a mask), inline and without branches: the build
-// targets plain x86-64, where __builtin_popcount is a library call (2% of a 3D integer grid's
-// samples, from the facet search's exactness check, one call per column set; callgrind with
-// this instead: 3D grid -1.6%, 6D grid -2.4%, 2D grid level; a counting loop gained 2.6% on
-// the 3D grid but lost 3.6% on the 2D one).
+// targets plain x86-64, where __builtin_popcount is a library call, and the facet search's
+// exactness check makes one call per column set (on integer grids this form takes fewer
+// instructions than the call, and than a counting loop, which loses in 2D).
 constexpr int bit_count(std::uint32_t x) {
   x = x - ((x >> 1) & 0x55555555u);
   x = (x & 0x33333333u) + ((x >> 2) & 0x33333333u);

@@ -101,12 +101,11 @@ IntegerScale scale_of(int dim, const double* base, const double* const* points, 
 
 // The exact evaluations' integers, kept per thread: GMP integers keep their limbs from call to
 // call, so inputs that need millions of exact tests (points within rounding of a sphere)
-// allocate nothing after the first ones (3D, 2 000 points on a sphere: a third of the time
-// was malloc and free).
+// allocate nothing after the first ones (on points on a sphere, malloc and free would
+// otherwise take much of the time).
 // Each integer starts with room for kReservedBits: Bareiss swaps its scratch integer with the
 // matrix's entries, so a small one would travel from entry to entry and be enlarged again and
-// again (a cylindrical grid's ties: realloc and free took about 7% of all instructions, and
-// this saved 4.9%).
+// again (on a cylindrical grid's ties, realloc and free would show in the profile).
 constexpr mp_bitcnt_t kReservedBits = 2048;
 struct ExactScratch {
   std::vector<mpz_class> matrix, base, delta;
@@ -262,10 +261,9 @@ std::optional<int> small_orientation(const Frame& f, const double* const* points
 // of the last m rows by column set, each along its first row, as refined_sign.cpp's minors_of
 // in double-double), with filtered_sign's bound and evaluation_is_exact's proof (every minor's
 // absolute tree below 2^52 of its unit). The generic filter's table of minors, with its
-// run-time loops, took a third of the time of a 4D integer grid's triangulation and half of a
-// 6D one's (the symbolic perturbation's orientations, several per tie). Callgrind, whole runs,
-// same output: integer grids 4D (10^4 points) -21%, 5D (5^5) -23%, 6D (3^6) -34%, 7D (760
-// points of 3^7) -37%; grids of 0.1 k 4D -8%, 5D -5%; uniform points level. The mask loop must
+// run-time loops, is a large share of an integer grid's triangulation from 4D on (the
+// symbolic perturbation's orientations, several per tie); this form takes far fewer
+// instructions there, for the same output, and is level on uniform points. The mask loop must
 // unroll in full (127 masks for k = 7), so that each mask's size and columns are constants.
 template <int K>
 std::optional<int> fixed_orientation(const Frame& f, const double* const* points) {
@@ -317,8 +315,8 @@ namespace {
 // many others (a tie's facet and candidate, all but the point left out and the tested point):
 // each such set's orientation cofactors (WideOrientationCofactors) kept in a small direct-mapped
 // cache, indexed by the rows' addresses and checked by their coordinates, so that a repeated set
-// costs a dot product where the whole 7 x 7 determinant took 441 products. On a 7D grid of
-// 0.1 k, 63% of these orientations repeat one of the last 16 sets.
+// costs a dot product where the whole 7 x 7 determinant takes 441 products. On grids, most of
+// these orientations repeat one of the last few sets.
 class OrientationCache {
  public:
   // The sign of the orientation of `points` in `f`, from the cached cofactors of all but the
@@ -425,13 +423,12 @@ bool has_zero_column(const Frame& f, const double* const* points, int count) {
 }
 
 std::optional<int> filtered_orientation(const Frame& f, const double* const* points) {
-  // First: k^2 comparisons, where the filters below certify nothing on such points (and cost
-  // most of the time that was left: 2.1 -> 1.57 s with the test before GMP only).
+  // First: k^2 comparisons, where the filters below certify nothing on such points (and would
+  // cost much of the time on inputs full of them).
   if (has_zero_column(f, points, f.k)) return 0;
   // For k <= 3, where small_orientation declines, the generic filter below, with the same
-  // error bound and exactness proof, would decline too: only the exact stages decide (callgrind,
-  // a 10 x 20 x 25 cylindrical grid's coplanar points: this function 208 M -> 75 M
-  // instructions, 6.5% of the run).
+  // error bound and exactness proof, would decline too: only the exact stages decide, and
+  // skipping that filter spares its work on coplanar points (a cylindrical grid's).
   if (f.k <= 3 && f.k >= 1) return small_orientation(f, points);
   switch (f.k) {
     case 4: return fixed_orientation<4>(f, points);

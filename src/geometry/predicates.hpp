@@ -66,9 +66,9 @@ int lifted_sign_perturbed(const Frame& frame, const double* const* points, const
 // perturbed, that sign decides, without an orientation.
 int lifted_tie_sign(const Frame& frame, const double* const* points, const std::int64_t* ranks, int known = 0);
 // lifted_sign_perturbed without the double filter, for a caller whose own filter of the same
-// determinant just failed: near-ties, which the generic filter would not decide either (2 000
-// points on a sphere: not once in 1.26M evaluations). The double-double and integer stages decide.
-// (facet_search.cpp now takes these stages one by one, exact_beats, to consult its known ties
+// determinant just failed: near-ties, which the generic filter would not decide either (on
+// points on a sphere it decided none). The double-double and integer stages decide.
+// (facet_search.cpp takes these stages one by one, exact_beats, to consult its known ties
 // between them.)
 int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points, const std::int64_t* ranks);
 // lifted_sign's last stage alone (integers: fixed-width, else GMP), unperturbed, for a caller
@@ -76,9 +76,9 @@ int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points,
 // the ties itself with lifted_tie_sign.
 int integer_lifted_sign(const Frame& frame, const double* const* points);
 // Its first part alone: the exact value in fixed-width integers (wide_determinant.hpp), for k
-// = 2 to 4 in up to 4 dimensions when the points' differences fit; nullopt otherwise. A few
-// thousand instructions, against GMP's fifteen thousand and the double-double stage's three
-// for a candidate's cofactors: a caller that meets mostly exact ties asks it first.
+// = 2 to 4 in up to 4 dimensions when the points' differences fit; nullopt otherwise. About
+// as cheap as the double-double stage for a candidate's cofactors and several times cheaper
+// than GMP: a caller that meets mostly exact ties asks it first.
 std::optional<int> small_integer_lifted_sign(const Frame& frame, const double* const* points);
 
 // The lifted determinant det[r_1; ...; r_k; r_x] (frame.k == frame.dim, rows relative to

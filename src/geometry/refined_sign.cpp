@@ -69,9 +69,9 @@ inline void expand_along(const DoubleDouble* entry, const double* size, int mask
 // expanded along its first row, and its absolute-value tree over the sizes (1 << C entries
 // each). In increasing order of mask every minor's sub-minors (its mask less one column) come
 // first. R and C are template parameters so that the loops unroll and the row of each mask (R
-// less its number of columns) is a constant: the generic loops, which took every mask n times to
-// pick those of each size and counted their bits with a library call, took 5 500 instructions
-// per 4 x 4 determinant.
+// less its number of columns) is a constant: generic loops, taking every mask n times to pick
+// those of each size and counting their bits with a library call, cost several times the
+// instructions per determinant.
 template <int R, int C, bool kFma>
 void minors_of(const Entries& entry, const Sizes& size, DoubleDouble* minor, double* tree) {
 #pragma GCC unroll 64

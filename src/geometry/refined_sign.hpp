@@ -8,8 +8,8 @@
 // point that lies within 2^-50 of the sphere, relative to the determinant's terms, is beyond
 // its reach. Such a point is rarely within 2^-100, though, unless it is exactly on it, and the
 // double-double evaluation decides it without GMP's integer scaling and Bareiss on several
-// limbs (two concentric spheres of 2 500 points in 3D: callgrind instructions -53% for the
-// whole run). Exact ties still go to GMP, and then to the perturbation.
+// limbs (on two concentric spheres the whole run takes far fewer instructions). Exact ties
+// still go to GMP, and then to the perturbation.
 #pragma once
 
 #include <optional>
@@ -20,8 +20,8 @@
 namespace drange::geometry {
 
 // Up to this many rows (frame.k + 1 lifted, frame.k oriented): the Laplace expansion's minors
-// grow as 2^n. Six since the twenty-third round: 5D's lifted determinants (points rounded to
-// 0.1 in 5D sent 1.9 M near-ties to GMP).
+// grow as 2^n. Six, for 5D's lifted determinants (points rounded to 0.1 in 5D would otherwise
+// send millions of near-ties to GMP).
 constexpr int kRefinedMaxRows = 6;
 
 // The sign of lifted_sign's determinant when the double-double evaluation proves it; nullopt
@@ -31,7 +31,7 @@ std::optional<int> refined_lifted_sign(const Frame& frame, const double* const* 
 
 // The same for orientation's determinant (frame.k rows of differences, 2 <= frame.k <=
 // kRefinedMaxRows): points within rounding of a hyperplane but not on it, as the radial lines of
-// a grid in cylindrical coordinates, which GMP decided at 4 700 instructions each (3 x 3).
+// a grid in cylindrical coordinates, which GMP decides at thousands of instructions each.
 std::optional<int> refined_orientation(const Frame& frame, const double* const* points);
 
 // Whether this stage computes its exact products by fused multiply-adds (2 operations instead of
@@ -55,8 +55,8 @@ class RefinedCofactors {
   // The same in two steps, for many candidates of one facet: prepare_facet with the first
   // frame.k - 1 points (the minors of their rows, 1 << (frame.k + 1) of them, kept), then
   // prepare_candidate with the frame.k-th for each candidate (its cofactors from those minors:
-  // in 4D 20 double-double products instead of 70; 4D points rounded to 0.05 prepared 1.5
-  // candidates per facet). `frame` the same throughout.
+  // in 4D 20 double-double products instead of 70; on 4D points rounded to 0.05 a facet
+  // prepares more than one candidate on average). `frame` the same throughout.
   void prepare_facet(const Frame& frame, const double* const* points);
   void prepare_candidate(const Frame& frame, const double* candidate);
   // The same for orientation's determinant (frame.k rows of differences, 2 <= frame.k <=
@@ -70,8 +70,8 @@ class RefinedCofactors {
   // `frame` must be prepare's.
   std::optional<int> sign_with(const Frame& frame, const double* x) const;
   // The same sign from the cofactors' high parts and x's row in plain doubles, when a bound
-  // proves it: about a third of sign_with's instructions (callgrind on the rings, 3D: 140
-  // against 474 per call), and as decisive except where x is within rounding of the sphere. For candidates within rounding of the facet's hyperplane (points
+  // proves it: a fraction of sign_with's instructions, and as decisive except where x is
+  // within rounding of the sphere. For candidates within rounding of the facet's hyperplane (points
   // that a decimal lattice puts on one plane): their double cofactors are noise, so that the
   // search's own filter decides none of the tests against them, and these do. Only for points
   // scaled below 1 in magnitude (PointStore::scaled), where kUnderflowError bounds underflow.

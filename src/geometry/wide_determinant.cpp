@@ -50,7 +50,7 @@ class CommonUnit {
 // 2^unit); false when it is not below kLargestDifference. The difference is hi + lo exactly
 // (Knuth's two-sum), each a multiple of 2^unit (a rounding of one is a multiple of its ulp, at
 // least 2^unit), so each scales to an integer exactly: two conversions, where shifting each
-// coordinate's significand into 128 bits took several times the instructions.
+// coordinate's significand into 128 bits would take several times the instructions.
 [[gnu::always_inline]] inline bool difference(double x, double base, double inverse, std::int64_t& out) {
   const double hi = x - base;  // two-sum of x and -base
   const double base_part = hi - x, x_part = hi - base_part;
@@ -175,7 +175,7 @@ Wide<5> spatial5(const std::int64_t (*x)[kMaxColumns]) {
 
 // The 6 x 6 spatial determinant of rows 0 .. 5 of x, by Laplace along rows (0, 1), and each
 // 4 x 4 minor of rows 2 .. 5 along rows (2, 3) (as laplace4): 105 products, where a table as
-// below took 192 (and 9% more instructions on a 6D grid of 0.1 k). 2 x 2 minors below 2^125,
+// below takes 192 (and more instructions on a 6D grid). 2 x 2 minors below 2^125,
 // 4 x 4 ones below 2^252.6, the sum below 2^381.5.
 Wide<6> spatial6(const std::int64_t (*x)[kMaxColumns]) {
   Wide<2> top[15], middle[15], bottom[15];
@@ -224,7 +224,7 @@ using MinorLevel = Wide<minor_limbs(M, kLift)>[1 << C];
 constexpr int binomial(int n, int k) { return k == 0 ? 1 : binomial(n - 1, k - 1) * n / k; }
 
 // The sets of M of C columns, as bit masks, laid out at compile time (__builtin_popcount is a
-// libgcc call on plain x86-64: counting at run time took 19% of a 6D grid of 0.1 k).
+// libgcc call on plain x86-64: counting at run time is a large share of a 6D grid's run).
 template <int C, int M>
 struct ColumnSets {
   unsigned mask[binomial(C, M)];
@@ -503,8 +503,8 @@ void WideLiftedCofactors::prepare4(const std::int64_t (*x)[kMaxDim], const Int12
   //   + T(i,j) B(k,L) - T(i,k) B(j,L) + T(i,L) B(j,k) + T(j,k) B(i,L) - T(j,L) B(i,k) + T(k,L) B(i,j),
   // T and B the 2 x 2 minors of the top and bottom row pairs. Spatial ones below 2^125; those
   // with the lift, x_r L_s - L_r x_s, below 2^189; each product below 2^314, the sum below 2^317.
-  // (Expanding along the lift column instead, as 3 x 3 minors times lifts, took 16 products of
-  // products where this takes 6 per column: callgrind, a 4D grid of 0.1 k, prepare4 -32%.)
+  // (Expanding along the lift column instead, as 3 x 3 minors times lifts, takes 16 products of
+  // products where this takes 6 per column.)
   Wide<2> top[6], bottom[6];
   pair_minors<4>(x, 0, 1, top);
   pair_minors<4>(x, 2, 3, bottom);

@@ -94,7 +94,7 @@ DRANGE_WIDE_INLINE Wide<N> operator-(const Wide<N>& a, const Wide<N>& b) {
 // limbs are multiplied as unsigned, then corrected for the signs: a negative a stands for
 // a + 2^(64 A) there, which adds b 2^(64 A) to the product, so b is taken off the upper B
 // limbs (and a off the upper A limbs for a negative b); 2^(64 (A + B)) falls out of range.
-// Without branches, where taking magnitudes first and negating the product took three
+// Without branches, where taking magnitudes first and negating the product would take three
 // conditional negations.
 template <int A, int B>
 DRANGE_WIDE_INLINE Wide<A + B> operator*(const Wide<A>& a, const Wide<B>& b) {

@@ -53,7 +53,7 @@ class LineScanner {
 
   // An upper bound for the number of content lines left (one pass over the rest of the
   // text, cheap next to parsing it): lets readers size their arrays once. memchr from line
-  // end to line end: std::count went byte by byte, 3 instructions per byte.
+  // end to line end: std::count would go byte by byte.
   std::size_t remaining_lines_bound() const {
     std::size_t lines = 1;
     const char* at = text_.data() + pos_;

@@ -153,8 +153,8 @@ template <int D>
 void KdTree::build_fixed(const double* coords, std::int32_t n, int leaf_size, double* reordered, int threads) {
   int depth = 0;  // 2^depth >= threads
   while ((1 << depth) < threads && depth < 6) ++depth;
-  // The copies in and out run on the build's threads too: on 2 threads, 2D 1M, they were 11 of
-  // the build's 75 ms, most of it the first touch of fresh pages.
+  // The copies in and out run on the build's threads too: they are a fair share of the build,
+  // most of it the first touch of fresh pages.
   util::UninitializedVector<Item<D>> items(static_cast<std::size_t>(n));
   for_halves(0, n, depth, [&](std::int32_t begin, std::int32_t end) {
     for (std::int32_t i = begin; i < end; ++i) {

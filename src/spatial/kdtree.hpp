@@ -160,8 +160,8 @@ std::uint64_t KdTree::walk(Visitor& visitor, std::int32_t root) const {
       continue;
     }
     // Push the child to visit second first. Their boxes are read when they are popped: fetch
-    // them now, from 4D on (in 2D and 3D it did not pay: 2D 1M time_search best of 3 0.873 ->
-    // 0.870 s, 3D 200k 1.361 -> 1.339, once 0.86 -> 0.92 and 1.36 -> 1.44 under load).
+    // them now, from 4D on (in 2D and 3D the gain was within the noise, and negative under
+    // load).
     if (dimension<D>() >= 4) {
       __builtin_prefetch(lower<D>(i + 1));
       __builtin_prefetch(lower<D>(node.right));

@@ -1,8 +1,8 @@
 // util/cache_size.hpp: the size of a core's level-2 cache, as the system reports it.
 //
 // The driver prefetches the facet table's slots only once the table outgrows this cache
-// (delaunay/frontier.hpp): a fixed 1 MiB, the first machine's L2, kept a 1 MiB table (3D,
-// 200 000 points) unprefetched on a machine with 512 KiB, where its lookups then missed.
+// (delaunay/frontier.hpp): a fixed size, right for one machine, would leave a table that
+// outgrows a smaller L2 unprefetched, where its lookups miss.
 #pragma once
 
 #include <cstddef>

@@ -1,13 +1,12 @@
 // util/huge_pages.hpp: asks the kernel to back a large fresh array with 2 MiB pages.
 //
-// Each 4 KiB page of a fresh array costs a page fault when first touched: `drange delaunay` on
-// 2D 1M points, one thread, made 58 000 faults (3D 1M: 116 000). With 2 MiB pages for the
-// arrays of the prepared points, the kd-tree, the seeds and the input text and coordinates:
-// 20 000 (63 000), and time_kdtree 15% less (2D 1M, median of 6 interleaved pairs). Not for
-// the simplices and neighbours: the kernel zeroes each 2 MiB page at once, in the middle of
-// the search, and 3D 1M searched 5% to 6% slower with them (5 pairs, both orders). Linux backs
-// memory with them where a program asks when /sys/kernel/mm/transparent_hugepage/enabled says
-// "madvise" (this machine's setting), everywhere when it says "always", and never when it says
+// Each 4 KiB page of a fresh array costs a page fault when first touched: a run on a million
+// points makes tens of thousands. 2 MiB pages for the arrays of the prepared points, the
+// kd-tree, the seeds and the input text and coordinates remove most of those faults and
+// measurably shorten the preparation. Not for the simplices and neighbours: the kernel zeroes
+// each 2 MiB page at once, in the middle of the search, which made the 3D search slower. Linux
+// backs memory with them where a program asks when /sys/kernel/mm/transparent_hugepage/enabled
+// says "madvise", everywhere when it says "always", and never when it says
 // "never". The advice is a hint: where it is refused or unknown, nothing changes but the count
 // of faults.
 #pragma once

@@ -3,10 +3,10 @@
 // The facet table and queue grow by doubling: each growth frees the old buffer. glibc serves
 // large blocks with mmap at first, but every such free raises its mmap threshold (up to
 // 32 MiB), after which buffers of that size come from the heap, and a freed one stays resident
-// until the heap is trimmed (its top beyond twice the threshold). The peak memory then carried
-// freed buffers: 8D, 300 points, 448 MiB against 405 with the threshold fixed
-// (MALLOC_MMAP_THRESHOLD_=131072) or with this call after each growth; 6D 5 000 points 432 ->
-// 405 MiB, 4D 100 000 166 -> 152. The call is made O(log n) times per run.
+// until the heap is trimmed (its top beyond twice the threshold). The peak memory then carries
+// freed buffers, markedly so in high dimensions; this call after each growth keeps them out
+// of it, as a fixed threshold (MALLOC_MMAP_THRESHOLD_) would. The call is made O(log n) times
+// per run.
 #pragma once
 
 #if defined(__GLIBC__)

@@ -27,13 +27,12 @@ namespace drange::util {
 namespace select_detail {
 
 // The partition moves its elements as whole objects, padding included (T is trivially
-// copyable): a member-wise copy of the kd-tree's items stored their 4-byte index alone, and a
-// later 8-byte load of the same place (the index and the padding after it) then waited for
+// copyable): a member-wise copy of the kd-tree's items stores their 4-byte index alone, and a
+// later 8-byte load of the same place (the index and the padding after it) then waits for
 // that store to leave the store buffer instead of taking its value from it. With the copy
-// compared too, GCC kept it on the stack to index its coordinate by the split axis.
-// KdTree::build_and_reorder alone, 1M uniform points, min of 7: 2D 135 -> 122 ms, 3D 148 ->
-// 135, 4D 167 -> 147. (The few moves elsewhere here are not worth it: as whole objects, 2D
-// was 2 ms slower.)
+// compared too, GCC keeps it on the stack to index its coordinate by the split axis. Whole
+// objects make KdTree::build_and_reorder measurably faster in 2D to 4D. (The few moves
+// elsewhere here are not worth it: as whole objects, they were slightly slower in 2D.)
 template <class T>
 void copy_object(T* to, const T* from) {
   static_assert(std::is_trivially_copyable_v<T>, "moved as bytes");
@@ -60,7 +59,7 @@ void median_to(T* a, T* b, T* c, Less less) {
 
 // Partitions [first, last) around the pivot *first: returns p with *p the pivot, every element
 // of [first, p) less than it, and none of (p, last). Out of line: inlined into select_nth's
-// loop, the kd-tree build of 1M 3D points took 145 ms instead of 135.
+// loop, it made the kd-tree build slower.
 template <class T, class Less>
 [[gnu::noinline]] T* partition_around_first(T* first, T* last, Less less) {
   T pivot;

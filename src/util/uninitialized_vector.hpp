@@ -3,7 +3,7 @@
 //
 // std::vector<T>(n) and resize(n) write zeros to every element; the kernel has zeroed the fresh
 // pages already, so the memory is written twice, and by the calling thread alone, before the
-// threads that fill it start (prepare_points.cpp: 24 MB of items for 1M points in 2D, 8 ms).
+// threads that fill it start (prepare_points.cpp: tens of megabytes of items for a million points).
 // Here an element of a trivial type is left as the memory holds it: each page is touched
 // first by the thread that fills it. A large array is also backed by 2 MiB pages where the
 // system allows (huge_pages.hpp).
