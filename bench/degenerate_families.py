@@ -1,9 +1,9 @@
 #!/usr/bin/python3
-"""bench/degenerate_families.py: writes the eighteenth to thirtieth rounds' probe inputs
-(bench/RESULTS.md, "The eighteenth round" to "The thirtieth round"): 20 000 points each
-(5 000 for two_spheres4; 10 000, 3 125, 729 and 1 458 for the 4D to 7D decimal grids; 200 000
-for ellipsoid_200k) on curved sets that are not one input sphere (among them smooth surfaces,
-where the direct search is weak), a terrain with a flat plateau, and decimal grids and
+"""bench/degenerate_families.py: writes the degenerate probe inputs of `bench/run.sh
+--degenerate` (its table is in bench/RESULTS.md): 20 000 points each (5 000 for two_spheres4;
+10 000, 3 125, 729 and 1 458 for the 4D to 7D decimal grids; 100 000 for rounded3_dense;
+200 000 for ellipsoid_200k) on curved sets that are not one input sphere (among them smooth
+surfaces, where the direct search is weak), a terrain with a flat plateau, and decimal grids and
 rounded points, whose ties need the exact stages, in Qhull's format, into a directory.
 
     bench/degenerate_families.py DIR
@@ -49,8 +49,8 @@ def families(rng):
     yield "torus", torus
     yield "sphere_in_ball", ([on_sphere(rng, 3) for _ in range(N * 4 // 5)] +
                              [[x * rng.random() ** (1 / 3) for x in on_sphere(rng, 3)] for _ in range(N // 5)])
-    # The nineteenth round's concentric spheres: five in 3D, two in 4D, and the eight layers of
-    # a spherical grid (the same 2 500 Fibonacci points at each radius, as in Earth models).
+    # Concentric spheres: five in 3D, two in 4D, and the eight layers of a spherical grid (the
+    # same 2 500 Fibonacci points at each radius, as in Earth models).
     yield "five_spheres3", [[x * r for x in on_sphere(rng, 3)] for r in (1, 0.8, 0.6, 0.4, 0.2) for _ in range(N // 5)]
     yield "two_spheres4", [[x * r for x in on_sphere(rng, 4)] for r in (1, 0.5) for _ in range(N // 8)]
     fibonacci = []
@@ -61,16 +61,16 @@ def families(rng):
     yield "layers3", [[x * (6371 - 300 * k) for x in p] for k in range(8) for p in fibonacci]
     yield "polar_grid", [[r / 50 * math.cos(2 * math.pi * j / 400), r / 50 * math.sin(2 * math.pi * j / 400)]
                          for r in range(1, 51) for j in range(400)]
-    # The twentieth round's terrain (2.5D): half the points on a flat plateau at z = 0.3 (a
-    # coordinate no power of two divides), the rest on a wavy slope.
+    # A terrain (2.5D): half the points on a flat plateau at z = 0.3 (a coordinate no power of
+    # two divides), the rest on a wavy slope.
     plateau = []
     for _ in range(N):
         x, y = rng.random(), rng.random()
         plateau.append([x, y, 0.3 if x < 0.5 else 0.3 + 0.2 * (x - 0.5) * math.sin(7 * y)])
     yield "plateau", plateau
-    # The twenty-second round's decimal data: grids of 0.1 k and 0.01 k (as numpy.arange makes
-    # them: no power of two divides the coordinates, so every tie is for the exact stages), and
-    # uniform points rounded to two decimals (distinct), as in CSV files.
+    # Decimal data: grids of 0.1 k and 0.01 k (as numpy.arange makes them: no power of two
+    # divides the coordinates, so every tie is for the exact stages), and uniform points rounded
+    # to two decimals (distinct), as in CSV files.
     yield "decimal_grid3", [[0.1 * i, 0.1 * j, 0.1 * k] for i in range(27) for j in range(27) for k in range(27)]
     yield "decimal_grid2", [[0.01 * i, 0.01 * j] for i in range(200) for j in range(100)]
     rounded = {}
@@ -78,9 +78,9 @@ def families(rng):
         p = tuple(round(rng.random(), 2) for _ in range(3))
         rounded[p] = None
     yield "rounded3", [list(p) for p in rounded]
-    # The twenty-third round's denser decimal data: 100 000 distinct points rounded to 0.01 in
-    # 3D (a tenth of the lattice's sites taken: four points of a lattice plane on one circle
-    # abound), and 20 000 rounded to 0.05 in 4D.
+    # Denser decimal data: 100 000 distinct points rounded to 0.01 in 3D (a tenth of the
+    # lattice's sites taken: four points of a lattice plane on one circle abound), and 20 000
+    # rounded to 0.05 in 4D.
     rounded = {}
     while len(rounded) < 100000:
         rounded[tuple(round(rng.random(), 2) for _ in range(3))] = None
@@ -89,20 +89,19 @@ def families(rng):
     while len(rounded) < N:
         rounded[tuple(round(rng.random() * 20) / 20 for _ in range(4))] = None
     yield "rounded4", [list(p) for p in rounded]
-    # The twenty-fifth round's decimal grids in 4D and 5D, whose ties took the fixed-width stage
-    # (4D) or GMP (5D): 10^4 and 5^5 points of 0.1 k.
+    # Decimal grids in 4D and 5D: 10^4 and 5^5 points of 0.1 k, whose ties go to the exact
+    # integer stages.
     yield "decimal_grid4", [[0.1 * i, 0.1 * j, 0.1 * k, 0.1 * m] for i in range(10) for j in range(10)
                             for k in range(10) for m in range(10)]
     yield "decimal_grid5", [[0.1 * i, 0.1 * j, 0.1 * k, 0.1 * m, 0.1 * q] for i in range(5) for j in range(5)
                             for k in range(5) for m in range(5) for q in range(5)]
-    # The twenty-sixth round's, in 6D and 7D, whose ties took the fixed-width stage (6D) or GMP
-    # (7D): {0, .1, .2}^6 and {0, .1, .2}^6 x {0, .1}.
+    # And in 6D and 7D: {0, .1, .2}^6 and {0, .1, .2}^6 x {0, .1}.
     yield "decimal_grid6", [[0.1 * x for x in p] for p in itertools.product(range(3), repeat=6)]
     yield "decimal_grid7", [[0.1 * x for x in p + (z,)] for p in itertools.product(range(3), repeat=6) for z in range(2)]
-    # The thirtieth round's smooth surfaces that are no sphere, as a scan samples an object: an
-    # ellipse in the plane, an ellipsoid of axes 1, 0.7 and 0.4 (20 000 and 200 000 points),
-    # and a sphere with waves of a fifth of its radius. (Last, so that the families above keep
-    # their points.)
+    # Smooth surfaces that are no sphere, as a scan samples an object: an ellipse in the plane,
+    # an ellipsoid of axes 1, 0.7 and 0.4 (20 000 and 200 000 points), and a sphere with waves
+    # of a fifth of its radius. (Last, so that the families above keep their points: they share
+    # one random generator.)
     yield "ellipse", [[x[0], 0.6 * x[1]] for x in (on_sphere(rng, 2) for _ in range(N))]
     for name, count in (("ellipsoid", N), ("ellipsoid_200k", 10 * N)):
         yield name, [[x[0], 0.7 * x[1], 0.4 * x[2]] for x in (on_sphere(rng, 3) for _ in range(count))]

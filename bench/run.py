@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """bench/run.py: runs the benchmark set, one process per (input, peer), and writes Markdown.
 
-Called by bench/run.sh (which installs the peers and builds build-bench); see README.md there.
-Every measurement is `drange_bench_run --peer P --input F` under `timeout`, with an address
+Called by bench/run.sh (which installs the peers and builds build-bench; its header lists the
+options). Every measurement is `drange_bench_run --peer P --input F` under `timeout`, with an address
 space limit, so a peer that runs too long shows "> T s" and one that runs out of memory "OOM".
 """
 import argparse
@@ -48,14 +48,9 @@ STANDARD = [
 # Rows for drange alone: the uniform input of the 3D grid's size, for the grid-to-uniform ratio.
 DRANGE_ONLY = {("uniform", 216000, 3)}
 # The d = 7 and d = 8 targets of issue 4: sizes where the peers take over 10 minutes
-# (`--beyond`, with a 600 s limit). A peer that timed out on uniform input is not run on more
-# points. Measured on one thread with the runner (seed 1) on the AMD EPYC machine, 2026-11-25:
-# CGAL dD static took 272 s on 7D 4 500 points and 532 s on 7 000 (about n^1.5), over 600 s on
-# 9 000; 496 s on 8D 1 500, over 600 s on 2 000. (On the earlier Intel machine it had passed
-# 600 s already at 7D 7 000 and 8D 1 500, the rows this set had then.) Qhull took over 600 s
-# on 7D 4 500 and 8D 1 500 (over 300 s on 7D 2 000 in the issue's figures). drange took 121,
-# 224 and 333 s on 7D 4 500, 7 000 and 9 000 points, 194 and 301 s on 8D 1 500 and 2 000, with
-# a peak of 4.5 and 6.3 GiB on the largest.
+# (`--beyond`, with a 600 s limit). In each dimension the smaller size is one where CGAL dD still
+# finishes, so that a ratio is measured, and the larger one where it does not; bench/RESULTS.md
+# has the run. A peer that timed out on uniform input is not run on more points.
 BEYOND = [("uniform", 4500, 7), ("uniform", 9000, 7), ("uniform", 1500, 8), ("uniform", 2000, 8)]
 # `--degenerate`: the probe inputs of bench/degenerate_families.py (points on curved sets that are
 # not one input sphere: concentric spheres, spheres about several centres, rings, smooth
@@ -207,6 +202,19 @@ def ratio(ours, theirs, timeout, own_timeout):
     return ""
 
 
+def commit():
+    """The commit the build came from, with "+ changes" when tracked files differ from it, so that
+    each generated table says what code it measured (bench/RESULTS.md quotes it)."""
+    try:
+        head = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True,
+                              text=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain", "--untracked-files=no"],
+                               capture_output=True, text=True).stdout.strip()
+    except OSError:
+        return "unknown"
+    return (head or "unknown") + (" + uncommitted changes" if head and dirty else "")
+
+
 def machine():
     lines = []
     model = cores = ""
@@ -279,6 +287,7 @@ def main():
     out.append(f"# drange benchmark ({title} set)")
     out.append("")
     out.append(f"Command: `{args.command}`  ")
+    out.append(f"Commit: {commit()}  ")
     out.append(f"Date: {datetime.datetime.now().strftime('%Y-%m-%d %H:%M')}; per-run timeout {timeout} s; "
                f"address-space limit {args.mem_limit_gib:g} GiB per run")
     out.append("")

@@ -2,7 +2,9 @@
 # bench/run.sh: drange against its peers (issue 4). Installs what is missing (Debian packages,
 # as scripts/setup.sh does), builds ./build-bench with -DDRANGE_BUILD_BENCH=ON (Release),
 # generates the inputs into bench/data (git-ignored) and runs every (input, peer) pair in a
-# process of its own, with a timeout; writes one Markdown table (and a .csv of the raw lines).
+# process of its own, with a timeout; writes one Markdown table (and a .csv of the raw lines),
+# headed by the command, the commit and the machine. bench/RESULTS.md keeps the newest
+# generated file of each set: a new run's file replaces its set's section there.
 #
 #   bench/run.sh [--quick] [--ablation] [--beyond] [--degenerate] [--micro] [--timeout S] [--repeat N]
 #                [--rows DIST:D:N,...] [-o FILE]
@@ -35,7 +37,7 @@ while [ $# -gt 0 ]; do
     --repeat) extra+=(--repeat "$2"); shift ;;
     --rows) extra+=(--rows "$2"); shift ;;
     -o) output="$2"; shift ;;
-    -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift

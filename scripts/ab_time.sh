@@ -3,8 +3,8 @@
 # so that a change of machine load hits both alike; prints the minimum of time_search and
 # time_total of each, and B's search time over A's. The search-time figures in commit messages
 # ("min of 3, interleaved") come from this. The pairs alternate their order (A B, B A, A B,
-# ...): on the second machine, whichever binary ran first in each pair came out up to 10%
-# faster in some series, in both orders (bench/RESULTS.md, "The fourteenth round").
+# ...) because on a noisy machine whichever binary runs first in a pair can come out faster:
+# alternating lets that bias hit both builds alike.
 #
 #   scripts/ab_time.sh N POINTS DRANGE_A DRANGE_B [delaunay options...]
 #
