@@ -16,6 +16,7 @@
 #include "geometry/error_bound.hpp"
 #include "geometry/exact.hpp"
 #include "geometry/minors.hpp"
+#include "geometry/predicate_stages.hpp"
 #include "geometry/predicates.hpp"
 #include "oracle.hpp"
 

@@ -184,7 +184,8 @@ DistinctPoints distinct_points_fixed(PointsView input, std::vector<Duplicate>& d
 
 }  // namespace
 
-PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates, Team& team) {
+PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates, Team& team,
+                          const SearchOptions& accelerators) {
   check_input(input);
   const int d = input.dim;
   duplicates.clear();
@@ -209,10 +210,13 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   store.tree.build_and_reorder(by_rank.data(), store.size, d, leaf_size, team.threads());
   store.coords = std::move(by_rank);  // now in tree order
   store.blocks = LeafBlocks(store.tree, store.coords.data(), d, team);
-  store.slabs = NodeSlabs(store.tree, store.coords.data(), d, team);
-  store.shell = fit_sphere_shell(store.coords.data(), store.size, d, store.tree);
-  store.hull.edges = HullEdges(store);
-  store.hull.triangles = HullTriangles(store);
+  // The search's accelerators, each only when the search will consult it (FacetSearch).
+  if (accelerators.node_slabs) store.slabs = NodeSlabs(store.tree, store.coords.data(), d, team);
+  if (accelerators.use_kdtree && accelerators.sphere_shell) store.shell = fit_sphere_shell(store.coords.data(), store.size, d, store.tree);
+  if (accelerators.known_hull_facets) {
+    store.hull.edges = HullEdges(store);
+    store.hull.triangles = HullTriangles(store);
+  }
   const auto& order = store.tree.order();  // the rank of each id (PointStore::rank)
   store.input_index.resize(kept);
   for_ranges(order.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {

@@ -212,7 +212,7 @@ Triangulation delaunay(PointsView input, const Options& options) {
   struct alignas(64) SharedPoints {
     engine::PointStore store;
   };
-  const auto shared_points = std::make_unique<const SharedPoints>(SharedPoints{engine::prepare_points(input, engine::search_leaf_size(input.dim), result.duplicates, team)});
+  const auto shared_points = std::make_unique<const SharedPoints>(SharedPoints{engine::prepare_points(input, engine::search_leaf_size(input.dim), result.duplicates, team, options.search)});
   const engine::PointStore& points = shared_points->store;
   const int d = points.dim;
   const int width = d + 1;

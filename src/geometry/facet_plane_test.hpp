@@ -31,6 +31,7 @@
 #include "geometry/error_bound.hpp"
 #include "geometry/known_ties.hpp"
 #include "geometry/minors.hpp"
+#include "geometry/predicate_stages.hpp"
 #include "geometry/predicates.hpp"
 #include "geometry/refined_sign.hpp"
 #include "geometry/static_exactness.hpp"

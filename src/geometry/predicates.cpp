@@ -1,5 +1,6 @@
 // geometry/predicates.cpp: orientation and lifted (in-sphere) determinants, filtered then
 // exact, and the symbolic perturbation that breaks lifted ties.
+#include "geometry/predicate_stages.hpp"
 #include "geometry/predicates.hpp"
 
 #include <algorithm>
