@@ -4,8 +4,7 @@
 //   FacetQueue         FIFO, the paper's order. A ring of fixed-width entries: the facet queued
 //                      k-th (its place, counting every push) lives in entry k mod capacity, and
 //                      the ring doubles when full. No facet moves while it waits except when the
-//                      ring grows; the vector this replaced dropped its consumed front with a
-//                      memmove of the rest (3% of a 2D run on one thread).
+//                      ring grows (a vector would move its whole rest at every pop).
 //   SpatialFacetQueue  spatial: the facet whose smallest vertex id, shifted right by a block
 //                      shift, is least comes first; FIFO among equal keys. Point ids follow the
 //                      kd-tree's order, a space-filling one, so the frontier sweeps through space
@@ -43,8 +42,8 @@ struct FacetInfo {
 // A facet closed while it waits is marked, so that its turn needs no table lookup. The marks
 // are bits apart from the entries: marking then writes to a small array that stays in cache,
 // not to a random entry of a large ring (a miss each), and a facet's turn reads its bit
-// where it would otherwise probe the facet table (a miss on a large frontier: about 70% of
-// the facets popped in 6D were closed while they waited).
+// where it would otherwise probe the facet table (a miss on a large frontier, where in high d
+// most of the facets popped were closed while they waited).
 class FacetQueue {
  public:
   // Closures are marked on every thread count (Frontier, frontier.hpp).
@@ -263,10 +262,8 @@ class SpatialFacetQueue {
   std::vector<std::int32_t> data_;
   // Per entry: the next entry of its key's list, -1 at the end. Apart from the entries: the
   // driver pops a batch of up to 256 facets at once, mostly down one key's list, and with the
-  // link inside each entry every pop waited for the miss on the entry before (3D to 5D: that
-  // load was a third of the serial loop's samples). Read from this small array, the links
-  // are found first and the entries' misses overlap. Time_search, min of interleaved runs:
-  // 3D 200k -5.9%, 3D 1M -9.7%, 4D 30k -5.3%, 4D 100k +0.5%, 5D 8k -10.5%, 5D 20k -7.9%.
+  // link inside each entry every pop waited for the miss on the entry before. Read from this
+  // small array, the links are found first and the entries' misses overlap.
   std::vector<std::int32_t> next_;
 };
 

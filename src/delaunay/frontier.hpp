@@ -128,7 +128,7 @@ class Frontier {
   // closed_after_pop() once they left it). Queues whose marks are cheap (FacetQueue) are marked
   // on one thread too; the serial loop of the spatial queue finds its closed facets by the
   // table lookup that take() makes anyway, since marking its entries would write to a random
-  // place of the queue for every closure (a cache miss each on a large 3D frontier: 5% slower).
+  // place of the queue for every closure (a cache miss each on a large 3D frontier).
   void mark_closures() { mark_closures_ = true; }
   // Records the search's result for a facet that take() accepted: the apex, or -1 on the hull;
   // with an apex, `derived` is derive_other_facets' block.
@@ -139,10 +139,9 @@ class Frontier {
   bool table_empty() const { return table_.size() == 0; }
 
  private:
-  // A core's L2 cache (util/cache_size.hpp), 1 MiB where the system does not tell. perf, 3D
-  // 200 000 points, whose table is 1 MiB, on the second machine (512 KiB of L2), two runs each:
-  // with the slots prefetched the table's lookups fell from 13.7% and 16.1% of the samples to
-  // 7.3% and 7.5%, the frontier's whole share from 26.2% and 28.7% to 23.2% and 23.8%.
+  // A core's L2 cache (util/cache_size.hpp), 1 MiB where the system does not tell: a table
+  // larger than that misses the cache at most lookups, and its slots are then worth
+  // prefetching; a smaller one stays cached, and prefetches would only add work.
   static constexpr std::size_t kDefaultCachedTableBytes = std::size_t{1} << 20;
   bool table_outgrows_cache() const { return table_.memory_bytes() > cached_table_bytes_; }
 

@@ -133,23 +133,19 @@ class SearchPipeline {
  private:
   // Facets claimed at once. Long runs keep a thread's searches together: facets next to each
   // other in the queue are next to each other in space, and a search reads the kd-tree nodes
-  // and points that the previous one brought into its core's cache. With runs of 16, the two
-  // threads alternated so often that each search missed the other core's cache lines: 2D 1M
-  // points, the search threads' CPU time was 35% above the serial search's; with 128, 10%.
-  // With up to 512 (FIFO; the spatial order's fixed window keeps its runs at 128 for 2
-  // threads), 2D 1M on 2 threads searched in 0.417 to 0.426 s instead of 0.431 to 0.437 (5
-  // interleaved runs each), and wasted 700 searches instead of 2 500: the facets a thread
-  // closes are more often in its own run, where its closure predictor sees them.
+  // and points that the previous one brought into its core's cache. Short runs make the
+  // threads alternate so often that each search misses the other core's cache lines. Long
+  // runs (up to kRun under FIFO; the spatial order's fixed window keeps them shorter) also
+  // waste fewer searches: the facets a thread closes are more often in its own run, where its
+  // closure predictor sees them.
   static constexpr std::uint64_t kRun = 512;
   // But a claim takes no more of the unclaimed facets than one run's worth of a window of
-  // kRunsPerThread runs per thread, and no fewer than this: with runs of 512 on a short
-  // frontier (2D 20k), one thread took all the window held and the other waited (0.009 ->
-  // 0.011 to 0.019 s).
+  // kRunsPerThread runs per thread, and no fewer than this: on a short frontier, one long run
+  // would take all the window holds and leave the other threads waiting.
   static constexpr std::uint64_t kLeastRun = 128;
   // The window, in runs per thread: enough that a thread rarely finds every facet of the window
   // claimed while the turn waits for a run still being searched. The longer the window, the
-  // more searches are wasted (a closure flag comes too late more often): with 4, 2D 1M points
-  // wastes about 0.2% of the searches and 3D 200k points about 2.5%, with 2 threads.
+  // more searches are wasted (a closure flag comes too late more often).
   static constexpr std::size_t kRunsPerThread = 4;
   static constexpr int kSpins = 256;  // pauses before yielding or sleeping
   enum class Outcome : std::uint8_t { closed, predicted, searched };
@@ -181,9 +177,7 @@ class SearchPipeline {
   // the window's lines (done_, results_, derived_) while the other core was still writing the
   // next slots of the same lines, and each line crossed between the cores once per facet
   // instead of once. The turns come later, so more searched facets turn out closed (wasted),
-  // which costs more where a search is long. 2 threads, time_search best of 3 to 5, per facet
-  // -> whole runs: 2D 1M 0.499 -> 0.484 s, 3D 1M 3.57 -> 3.45 s (wasted 43 000 -> 63 000);
-  // 4D 100k 2.667 -> 2.663 s; 5D 20k 5.26 -> 5.39 s (wasted 183 000 -> 285 000).
+  // which costs more where a search is long: whole runs pay in 2D and 3D, not from 4D on.
   void lead(Worker& worker, SearchTotals& totals) {
     std::uint64_t turn = 0;
     std::uint64_t run_end = 0;                 // the end of the run that holds `turn`, once known
