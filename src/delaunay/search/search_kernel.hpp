@@ -16,14 +16,10 @@
 // The arithmetic lives in the two predicates; the kernel only asks their signs and never
 // changes which point is found, only the order in which points are met.
 //
-// Accelerators (each optional, each in its own file, each proving only that a node or point
-// cannot win; their registration is in the constructor):
-//   - KnownHull (known_hull.hpp): a clean hull facet's outer side is not searched;
-//   - SeedMemory (seed_memory.hpp): first candidates;
-//   - ShellPruner (shell_pruner.hpp): points near spheres;
-//   - SlabPruner (slab_pruner.hpp): points on surfaces.
-// The closed-side pruning (paper, 2.4.1) and the ball (instead of the paper's box) are the
-// search's own, switched by SearchOptions.
+// The accelerators (known hull facets, seeds, sphere shell, node slabs) are consulted through
+// one interface, accelerators.hpp, where each is registered. The closed-side pruning (paper,
+// 2.4.1), the facet's child first (2.4.2), the bottom-up walk and the ball (instead of the
+// paper's box) are the search's own, switched by SearchOptions.
 #pragma once
 
 #include <algorithm>
@@ -33,13 +29,10 @@
 #include <string>
 
 #include "delaunay/facet_search.hpp"
-#include "delaunay/known_hull.hpp"
 #include "delaunay/leaf_blocks.hpp"
+#include "delaunay/search/accelerators.hpp"
 #include "delaunay/search/candidate_ball.hpp"
 #include "delaunay/search/lanes.hpp"
-#include "delaunay/search/shell_pruner.hpp"
-#include "delaunay/search/slab_pruner.hpp"
-#include "drange/errors.hpp"
 #include "geometry/facet_plane_test.hpp"
 #include "geometry/lifted_sphere_test.hpp"
 #include "geometry/static_exactness.hpp"
@@ -68,8 +61,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   }
   // The walk hands over the leaf's node, so that the scan needs no lookup of its own.
   void leaf(std::int32_t node, std::int32_t begin, std::int32_t end) {
-    if (shell_.scanning() && shell_.scan_leaf(node, end, [this](std::int32_t id) { consider(id); }, counters_->points_tested))
-      return;
+    if (accelerators_.scan_leaf(node, end, [this](std::int32_t id) { consider(id); }, counters_->points_tested)) return;
     if (region_.ball())
       scan_blocks(node, end);
     else if (candidate_ < 0)  // no candidate yet: every point of the leaf is in the query box
@@ -87,7 +79,7 @@ class SearchKernel final : public FacetSearch::Kernel {
   template <class Error>
   bool set_region(const double* w, const Error& error) {
     if (!region_.set(w, error, f0_, options_.ball_query)) return false;
-    if (region_.ball()) shell_.ball_centred(region_.centre());
+    if (region_.ball()) accelerators_.centred(region_.centre());
     return true;
   }
 
@@ -173,13 +165,8 @@ class SearchKernel final : public FacetSearch::Kernel {
   std::array<double, kMaxRow> row_{};  // r_x of the point being tested (scratch)
   SearchCounters* counters_ = nullptr;
 
-  // The accelerators.
-  SeedMemory& seeds_;
-  static constexpr int kSeeds = D > 0 ? SeedMemory::per_point_in(D) : 0;  // per point; 0: the memory's
-  const LeafBlocks& blocks_;         // points_.blocks
-  const KnownHull* hull_ = nullptr;  // when kept and the options ask for it
-  ShellPruner<D> shell_;
-  SlabPruner<D> slabs_;
+  const LeafBlocks& blocks_;  // points_.blocks
+  Accelerators<D> accelerators_;
 
   // The predicates; last, being large (their exact stages' fixed-width cofactors), apart from
   // the members that every search reads.
@@ -196,21 +183,11 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       filters_hold_(points.scaled),
       inverse_d_(1.0 / points.dim),
       region_(points.dim),
-      seeds_(seeds),
       blocks_(points.blocks),
-      hull_(options.known_hull_facets && points.hull.active() ? &points.hull : nullptr),
-      shell_(points.dim, options.use_kdtree && options.sphere_shell && points.shell.active() ? &points.shell : nullptr,
-             points.tree, points.coords.data()),
-      // Where one sphere holds every node, its offsets and cones bound each node better than a
-      // slab: the slabs are not tried there.
-      slabs_(points.dim, options.node_slabs && points.slabs.size() > 0 && !shell_.everywhere() ? &points.slabs : nullptr),
+      accelerators_(points, options, seeds),
       exactness_(points.dim, points.dyadic && points.scaled, points.unit_exponent),
       plane_(points.dim, points.size, points.scaled, options.remember_ties, exactness_),
       sphere_(points.dim, points.size, points.tree.order().data(), points.scaled, options.remember_ties, exactness_) {
-  // seed<kSeeds>() and remember<kSeeds>() take the memory's layout on trust.
-  if (kSeeds > 0 && seeds.seeds_per_point() != kSeeds)
-    throw InternalError("facet search: a seed memory of " + std::to_string(seeds.seeds_per_point()) +
-                        " seeds per point for a kernel of " + std::to_string(kSeeds));
 #if DRANGE_AVX2_LANES
   avx2_ = wide && __builtin_cpu_supports("avx2");
 #else
@@ -220,22 +197,13 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
 
 template <int D>
 std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, SearchCounters& counters) {
-  const int d = dim();
   counters_ = &counters;
-  // A clean hull facet's outer side holds no point: nothing to search.
-  if (hull_ != nullptr && hull_->outer_sigma(facet) == sigma) return -1;
+  if (accelerators_.skips(facet, sigma)) return -1;
   ball_nodes_ = 0;
-  slabs_.start_search();
   set_facet(facet, sigma);
   candidate_ = -1;
   region_.reset();
-  if (options_.seed_candidate) {
-    for (int i = 0; i < d; ++i)
-      for (int k = 0; k < (kSeeds > 0 ? kSeeds : seeds_.seeds_per_point()); ++k) {
-        const std::int32_t seed = seeds_.seed<kSeeds>(facet[i], k);
-        if (seed >= 0) consider(seed);
-      }
-  }
+  accelerators_.seeds(facet, [this](std::int32_t id) { consider(id); });
   if (options_.use_kdtree && options_.bottom_up) {
     counters.calls += points_.tree.search_from<D>(*this, points_.tree.leaf_of(facet[0]));
   } else if (options_.use_kdtree) {
@@ -244,9 +212,7 @@ std::int32_t SearchKernel<D>::find_apex(const std::int32_t* facet, int sigma, Se
     ++counters.calls;
     for (std::int32_t id = 0; id < points_.size; ++id) consider(id);
   }
-  if (options_.seed_candidate && candidate_ >= 0) {
-    for (int i = 0; i < d; ++i) seeds_.remember<kSeeds>(facet[i], candidate_);
-  }
+  accelerators_.found(facet, candidate_);
   return candidate_;
 }
 
@@ -265,7 +231,7 @@ void SearchKernel<D>::set_facet(const std::int32_t* facet, int sigma) {
   }
   sphere_.set_facet(facet, sigma, vertices.data());
   plane_.set_facet(facet, sigma, f0_, vertices.data() + 1, sphere_.minors(), sphere_.orientation_exact());
-  if (shell_.enabled()) shell_.start_facet(facet, f0_, plane_.coefficients());
+  accelerators_.start_facet(facet, f0_, plane_.coefficients());
 }
 
 template <int D>
@@ -273,7 +239,7 @@ void SearchKernel<D>::set_candidate(std::int32_t id) {
   candidate_ = id;
   ++counters_->candidates;
   sphere_.set_candidate(id, points_.point(id), row_.data());  // row_ holds r_p (test_other computed it)
-  shell_.start_candidate(id, sigma_, sphere_.rows());
+  accelerators_.start_candidate(id, sigma_, sphere_.rows());
   if (filters_hold_ && set_region(sphere_.w(), [this](int j) { return sphere_.error(j); })) return;
   // No trustworthy box from the doubles: the candidate within rounding of the facet's
   // hyperplane (every entry of w is then noise). The double-double cofactors give the sphere.
@@ -299,7 +265,7 @@ void SearchKernel<D>::test_other(std::int32_t id) {
   }
   row_[static_cast<std::size_t>(d)] = lift;
   if (!plane_.open_side(id, x, row_.data())) return;
-  if (candidate_ < 0 || sphere_.beats(id, x, row_.data(), [this](std::int32_t q) { return shell_.sign(q); }))
+  if (candidate_ < 0 || sphere_.beats(id, x, row_.data(), [this](std::int32_t q) { return accelerators_.sign(q); }))
     set_candidate(id);
 }
 
@@ -333,10 +299,7 @@ bool SearchKernel<D>::prune(std::int32_t node, bool leaf) {
     for (k = 1; k < d; ++k) distance2 += squares[static_cast<std::size_t>(k)];
     if (distance2 > region_.reach2()) return true;
   }
-  if (shell_.scanning() && shell_.prunes(node)) return true;
-  // A node of a curved patch whose box meets the ball may still lie wholly outside it (after
-  // the shell, which decides the nodes near its sphere better).
-  if (ball && !shell_.scanning() && slabs_.trying() && slabs_.misses_ball(node, region_.centre(), region_.reach())) return true;
+  if (accelerators_.beyond_candidate(node, ball, region_.centre(), region_.reach())) return true;
   // Within the candidate's ball, the closed side is a thin cap of its sphere, inside the empty
   // sphere of the simplex already found there: nodes wholly on the closed side that meet the
   // ball are rare and hold few points, and testing for them costs more than scanning them.
@@ -350,8 +313,7 @@ bool SearchKernel<D>::prune(std::int32_t node, bool leaf) {
   if (!options_.prune_closed_side || !filters_hold_) return false;
   double box_abs = 0.0;
   if (plane_.box_on_closed_side(lo, hi, box_abs)) return true;
-  if (shell_.enabled() && shell_.on_closed_side(node, plane_.box_gamma(), box_abs)) return true;
-  return slabs_.trying() && slabs_.on_closed_side(node, lo, hi, plane_.coefficients(), f0_, plane_.box_gamma(), box_abs);
+  return accelerators_.closed_side(node, lo, hi, plane_.coefficients(), f0_, plane_.box_gamma(), box_abs);
 }
 
 template <int D>
