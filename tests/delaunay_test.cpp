@@ -548,10 +548,10 @@ TEST(DelaunayVariants, BottomUpSeedsAndBallReduceTheWork) {
     EXPECT_LT(full.search_calls, no_bottom_up.search_calls) << "d=" << d;
     EXPECT_LT(no_seed.search_calls, paper.search_calls) << "d=" << d;
     // The seeds start the search with a good candidate: fewer improvements, fewer points tested.
-    EXPECT_LT(full.candidates, no_seed.candidates) << "d=" << d;
-    EXPECT_LT(full.points_tested, no_seed.points_tested) << "d=" << d;
+    EXPECT_LT(full.debug.candidates, no_seed.debug.candidates) << "d=" << d;
+    EXPECT_LT(full.debug.points_tested, no_seed.debug.points_tested) << "d=" << d;
     // The ball skips the corners of its bounding box: fewer points tested.
-    EXPECT_LT(full.points_tested, stats("no-ball").points_tested) << "d=" << d;
+    EXPECT_LT(full.debug.points_tested, stats("no-ball").debug.points_tested) << "d=" << d;
   }
 }
 
@@ -601,7 +601,7 @@ TEST(DelaunayVariants, PlateauFacetsPruneTheirFlatSide) {
     // bound with the flat axis, about three times as many without it, when every search from a
     // plateau facet visits the whole plateau before its first candidate; the gap grows with
     // the plateau.
-    EXPECT_LT(double(t.stats.points_tested) / double(t.stats.simplices), 8.0) << "flat axis " << flat;
+    EXPECT_LT(double(t.stats.debug.points_tested) / double(t.stats.simplices), 8.0) << "flat axis " << flat;
   }
 }
 
@@ -648,7 +648,7 @@ TEST(DelaunayVariants, TheBestPointOfABlockIsTriedFirstIn2D) {
   EXPECT_EQ(canonical(t), canonical(drange::delaunay(circles, no_prune)));
   // Candidates per simplex (a deterministic work counter, not a time): the bound lies between
   // the count in index order and the lower one with the best first (one seed per point).
-  EXPECT_LT(double(t.stats.candidates) / double(t.stats.simplices), 4.0);
+  EXPECT_LT(double(t.stats.debug.candidates) / double(t.stats.simplices), 4.0);
 }
 
 TEST(DelaunayVariants, CandidatesOnADecimalLatticePlaneGetABall) {
@@ -665,7 +665,7 @@ TEST(DelaunayVariants, CandidatesOnADecimalLatticePlaneGetABall) {
   expect_valid(points, t, "points rounded to 0.04");
   // Points tested per simplex (a deterministic work counter, not a time): well below the bound
   // with the double-double ball, several times above it without.
-  EXPECT_LT(double(t.stats.points_tested) / double(t.stats.simplices), 8.0);
+  EXPECT_LT(double(t.stats.debug.points_tested) / double(t.stats.simplices), 8.0);
 }
 
 TEST(DelaunayStatistics, CountsAreConsistent) {
@@ -682,6 +682,23 @@ TEST(DelaunayStatistics, CountsAreConsistent) {
   EXPECT_GT(s.peak_rss_bytes, 0u);
   EXPECT_GE(s.seconds_total, s.seconds_search);
   EXPECT_NE(s.summary().find("simplices=" + std::to_string(t.size())), std::string::npos);
+}
+
+// scripts/ab_time.sh and bench/ read the --stats line by its keys: they stay, in this order,
+// the debug counters included.
+TEST(DelaunayStatistics, SummaryKeysAreFixed) {
+  const PointCloud points = drange::generate_points(Distribution::Uniform, 2000, 3, 32);
+  const drange::Statistics s = drange::delaunay(points).stats;
+  std::vector<std::string> keys;
+  std::istringstream line(s.summary());
+  for (std::string pair; line >> pair;) keys.push_back(pair.substr(0, pair.find('=')));
+  const std::vector<std::string> expected = {
+      "points", "distinct", "simplices", "hull_facets", "calls_per_simplex", "tested_per_simplex",
+      "candidates_per_simplex", "exact_fallbacks", "max_open_facets", "shell_spheres", "threads", "wasted_searches",
+      "time_kdtree", "time_first_facet", "time_search", "time_total", "peak_rss"};
+  EXPECT_EQ(keys, expected) << s.summary();
+  EXPECT_NE(s.summary().find(" max_open_facets=" + std::to_string(s.debug.max_open_facets) + " "), std::string::npos);
+  EXPECT_NE(s.summary().find(" exact_fallbacks=" + std::to_string(s.debug.exact_fallbacks) + " "), std::string::npos);
 }
 
 // The room made for the simplices before the search (simplex_estimate.hpp) is address space

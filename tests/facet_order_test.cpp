@@ -100,7 +100,7 @@ TEST(FacetOrder, SpatialIsTheSameForEveryThreadCount) {
       EXPECT_TRUE(t.neighbors == serial.neighbors) << at << ": neighbours differ";
       EXPECT_EQ(t.stats.simplices, serial.stats.simplices) << at;
       EXPECT_EQ(t.stats.hull_facets, serial.stats.hull_facets) << at;
-      EXPECT_EQ(t.stats.max_open_facets, serial.stats.max_open_facets) << at;
+      EXPECT_EQ(t.stats.debug.max_open_facets, serial.stats.debug.max_open_facets) << at;
       EXPECT_EQ(t.stats.threads, static_cast<std::size_t>(threads)) << at;
     }
   }
@@ -120,9 +120,9 @@ TEST(FacetOrder, SpatialWorkCountersAreTheSameForEveryThreadCount) {
     const Triangulation t = drange::delaunay(points, options);
     EXPECT_TRUE(t.simplices == serial.simplices) << threads;
     EXPECT_EQ(t.stats.search_calls, serial.stats.search_calls) << threads;
-    EXPECT_EQ(t.stats.points_tested, serial.stats.points_tested) << threads;
-    EXPECT_EQ(t.stats.candidates, serial.stats.candidates) << threads;
-    EXPECT_EQ(t.stats.exact_fallbacks, serial.stats.exact_fallbacks) << threads;
+    EXPECT_EQ(t.stats.debug.points_tested, serial.stats.debug.points_tested) << threads;
+    EXPECT_EQ(t.stats.debug.candidates, serial.stats.debug.candidates) << threads;
+    EXPECT_EQ(t.stats.debug.exact_fallbacks, serial.stats.debug.exact_fallbacks) << threads;
   }
 }
 
@@ -147,8 +147,8 @@ TEST(FacetOrder, AutomaticIsSpatialInThreeToFiveDimensionsAndFifoElsewhere) {
 // sweeps through space (a count, not a time: deterministic).
 TEST(FacetOrder, SpatialKeepsTheThreeDimensionalFrontierSmall) {
   const PointCloud points = drange::generate_points(Distribution::Uniform, 50000, 3, 13);
-  const std::size_t fifo = run(points, FacetOrder::fifo).stats.max_open_facets;
-  const std::size_t spatial = run(points, FacetOrder::spatial).stats.max_open_facets;
+  const std::size_t fifo = run(points, FacetOrder::fifo).stats.debug.max_open_facets;
+  const std::size_t spatial = run(points, FacetOrder::spatial).stats.debug.max_open_facets;
   EXPECT_LT(spatial * 2, fifo) << "spatial " << spatial << ", fifo " << fifo;
 }
 

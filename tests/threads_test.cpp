@@ -57,7 +57,7 @@ void expect_same_for_every_thread_count(const std::string& name, const PointClou
   const std::string what = name + (seeds ? "" : ", no seeds");
   const Triangulation serial = run(points, 1, seeds);
   EXPECT_EQ(serial.stats.threads, 1u) << what;
-  EXPECT_EQ(serial.stats.wasted_searches, 0u) << what;
+  EXPECT_EQ(serial.stats.debug.wasted_searches, 0u) << what;
   const drange::CheckReport report = drange::check_triangulation(points, serial.simplices);
   EXPECT_TRUE(report.valid) << what << ": " << (report.problems.empty() ? "" : report.problems.front());
   for (const int threads : kThreadCounts) {
@@ -77,12 +77,12 @@ void expect_same_for_every_thread_count(const std::string& name, const PointClou
     EXPECT_EQ(a.distinct_points, b.distinct_points) << at;
     EXPECT_EQ(a.simplices, b.simplices) << at;
     EXPECT_EQ(a.hull_facets, b.hull_facets) << at;
-    EXPECT_EQ(a.max_open_facets, b.max_open_facets) << at;
+    EXPECT_EQ(a.debug.max_open_facets, b.debug.max_open_facets) << at;
     if (seeds) continue;
     EXPECT_EQ(a.search_calls, b.search_calls) << at;
-    EXPECT_EQ(a.points_tested, b.points_tested) << at;
-    EXPECT_EQ(a.candidates, b.candidates) << at;
-    EXPECT_EQ(a.exact_fallbacks, b.exact_fallbacks) << at;
+    EXPECT_EQ(a.debug.points_tested, b.debug.points_tested) << at;
+    EXPECT_EQ(a.debug.candidates, b.debug.candidates) << at;
+    EXPECT_EQ(a.debug.exact_fallbacks, b.debug.exact_fallbacks) << at;
   }
 }
 

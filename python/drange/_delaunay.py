@@ -40,7 +40,12 @@ class Delaunay(PointSetAttributes):
         The exact duplicates, left out of the triangulation: point index, a simplex holding
         it, and the index of the point it copies.
     statistics : dict
-        The engine's counters and timings.
+        The run's figures: points, distinct_points, simplices, hull_facets,
+        search_calls, calls_per_simplex, threads, seconds_kdtree, seconds_first_facet,
+        seconds_search, seconds_total, peak_rss_bytes; and statistics["debug"], a dict
+        of the engine's internal counters (points_tested, candidates, exact_fallbacks,
+        max_open_facets, shell_spheres, wasted_searches), whose meaning follows the
+        implementation.
 
     The other attributes (convex_hull, vertex_neighbor_vertices, vertex_to_simplex,
     equations, transform) are computed on first use.

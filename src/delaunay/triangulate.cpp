@@ -217,7 +217,7 @@ Triangulation delaunay(PointsView input, const Options& options) {
   const int d = points.dim;
   const int width = d + 1;
   stats.distinct_points = static_cast<std::size_t>(points.size);
-  stats.shell_spheres = static_cast<std::size_t>(points.shell.spheres());
+  stats.debug.shell_spheres = static_cast<std::size_t>(points.shell.spheres());
   stats.seconds_kdtree = seconds_since(start);
 
   auto phase = Clock::now();
@@ -247,10 +247,10 @@ Triangulation delaunay(PointsView input, const Options& options) {
   });
   stats.simplices = simplices.size() / static_cast<std::size_t>(width);
   stats.search_calls = totals.counters.calls;
-  stats.points_tested = totals.counters.points_tested;
-  stats.candidates = totals.counters.candidates;
-  stats.exact_fallbacks = exact_setup + totals.exact;
-  stats.wasted_searches = totals.wasted;
+  stats.debug.points_tested = totals.counters.points_tested;
+  stats.debug.candidates = totals.counters.candidates;
+  stats.debug.exact_fallbacks = exact_setup + totals.exact;
+  stats.debug.wasted_searches = totals.wasted;
   stats.seconds_total = seconds_since(start);
   stats.peak_rss_bytes = peak_rss_bytes();
   if (options.progress) options.progress(stats.simplices);
