@@ -11,7 +11,7 @@ namespace drange::bench {
 
 PeerResult run_drange(const PointCloud& points, const RunOptions& options) {
   Options o;
-  o.search = search_variant(options.variant);
+  o.variant = options.variant;
   o.threads = options.threads;
   const auto start = Clock::now();
   const Triangulation t = delaunay(points, o);

@@ -489,13 +489,22 @@ TEST(DelaunayVariants, EveryVariantGivesTheSameTriangulation) {
     const auto reference = canonical(drange::delaunay(points));
     for (const char* name : {"scan", "kdtree", "no-prune", "no-order", "paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-tie-memory", "no-slab", "no-hull", "fifo", "spatial"}) {
       drange::Options options;
-      options.search = drange::search_variant(name);
+      options.variant = name;
       const Triangulation t = drange::delaunay(points, options);
       EXPECT_EQ(canonical(t), reference) << name << " d=" << points.dim;
       EXPECT_GT(t.stats.search_calls, 0u);
     }
   }
-  EXPECT_THROW(drange::search_variant("fast"), drange::UsageError);
+  drange::Options unknown;
+  unknown.variant = "fast";
+  try {
+    drange::delaunay(inputs[0], unknown);
+    ADD_FAILURE() << "no exception for an unknown variant";
+  } catch (const drange::UsageError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("'fast'"), std::string::npos) << message;
+    EXPECT_NE(message.find(drange::variant_names()), std::string::npos) << message;
+  }
 }
 
 // The bottom-up walk, the seeds and the ball query change the order in which points are met,
@@ -528,7 +537,7 @@ TEST(DelaunayVariants, BottomUpAndSeedsChangeNothingOnDegenerateInputs) {
     const auto reference = canonical(drange::delaunay(points));
     for (const char* variant : {"paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-slab", "scan", "fifo", "spatial"}) {
       drange::Options options;
-      options.search = drange::search_variant(variant);
+      options.variant = variant;
       EXPECT_EQ(canonical(drange::delaunay(points, options)), reference) << name << ", " << variant;
     }
   }
@@ -539,7 +548,7 @@ TEST(DelaunayVariants, BottomUpSeedsAndBallReduceTheWork) {
     const PointCloud points = drange::generate_points(Distribution::Uniform, d == 2 ? 20000 : 5000, d, 24);
     auto stats = [&](const char* name) {
       drange::Options options;
-      options.search = drange::search_variant(name);
+      options.variant = name;
       return drange::delaunay(points, options).stats;
     };
     const drange::Statistics full = stats("full"), paper = stats("paper"), no_seed = stats("no-seed"),
@@ -559,7 +568,7 @@ TEST(DelaunayVariants, PruningAndOrderingReduceTheWork) {
   const PointCloud points = drange::generate_points(Distribution::Uniform, 20000, 2, 23);
   auto calls = [&](const char* name) {
     drange::Options options;
-    options.search = drange::search_variant(name);
+    options.variant = name;
     return drange::delaunay(points, options).stats.search_calls;
   };
   const auto full = calls("full");
@@ -620,7 +629,7 @@ TEST(DelaunayVariants, LongSearchesOnACylinderPruneTheClosedSide) {
   const Triangulation t = drange::delaunay(cylinder);
   expect_valid(cylinder, t, "cylinder");
   drange::Options no_prune;
-  no_prune.search = drange::search_variant("no-prune");
+  no_prune.variant = "no-prune";
   EXPECT_EQ(canonical(t), canonical(drange::delaunay(cylinder, no_prune)));
   // Nodes entered per simplex (a deterministic work counter, not a time): the bound lies between
   // the count with the closed side pruned only before the first ball and the lower one with it
@@ -644,7 +653,7 @@ TEST(DelaunayVariants, TheBestPointOfABlockIsTriedFirstIn2D) {
   const Triangulation t = drange::delaunay(circles);
   expect_valid(circles, t, "two circles");
   drange::Options no_prune;
-  no_prune.search = drange::search_variant("no-prune");
+  no_prune.variant = "no-prune";
   EXPECT_EQ(canonical(t), canonical(drange::delaunay(circles, no_prune)));
   // Candidates per simplex (a deterministic work counter, not a time): the bound lies between
   // the count in index order and the lower one with the best first (one seed per point).

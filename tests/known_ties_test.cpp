@@ -80,7 +80,7 @@ drange::PointCloud cylindrical_grid(int rings, int angles, int levels) {
 
 drange::Triangulation triangulate(const drange::PointCloud& points, const char* variant, int threads = 1) {
   drange::Options options;
-  options.search = drange::search_variant(variant);
+  options.variant = variant;
   options.threads = threads;
   return drange::delaunay(points, options);
 }

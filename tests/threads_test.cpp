@@ -37,13 +37,13 @@ PointCloud grid(int d, int k) {
 Triangulation run(const PointCloud& points, int threads, bool seeds = true) {
   drange::Options options;
   options.threads = threads;
-  options.search.seed_candidate = seeds;
+  options.variant = seeds ? "full" : "no-seed";
   return drange::delaunay(points, options);
 }
 
 // Every thread count gives the serial run's arrays, byte for byte, and its statistics (all
 // but the times, the thread count and the wasted searches); the serial result is valid.
-// The seed candidates (SearchOptions::seed_candidate) come from the recent searches of all
+// The seed candidates (variant no-seed leaves them out) come from the recent searches of all
 // threads, in the order the threads happened to make them, so with them the work counters
 // (calls, points tested, candidates, exact fallbacks) depend on the timing; without them,
 // they do not.

@@ -21,11 +21,13 @@ class Delaunay(PointSetAttributes):
     threads : int, keyword only
         Threads for the search and for find_simplex; 0 (default) uses all cores.
     variant : str, keyword only
-        The search variant: "full" (default), or one of the paper's ablations
-        ("scan", "kdtree", "no-prune", "no-order", "paper", ...), for comparison;
-        "fifo" and "spatial" fix the order in which open facets are taken (the
-        paper's FIFO, or the spatial order that "full" uses in 3D to 5D). The set of
-        simplices is the same for every variant; their order is not.
+        An ablation variant of the search, for measurements: "full" (default, the whole
+        algorithm), or one with a step left out ("scan", "kdtree", "no-prune",
+        "no-order", "paper", ...; every name: drange._drange.variant_names). Every
+        variant gives the same simplices; "fifo" and "spatial" fix the order in which
+        open facets are taken (the paper's FIFO, or the spatial order that "full" uses
+        in 3D to 5D), and "scan", "kdtree" and "paper" use FIFO: these number and list
+        the simplices in another order. An unknown name raises ValueError.
     progress : callable, keyword only
         Called as progress(simplices_found) every 65536 simplices, and once at the end.
 

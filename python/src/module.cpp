@@ -34,7 +34,7 @@ PointsView points_view(const Points& points, const char* what) {
 
 Options engine_options(const std::string& variant, int threads, PythonProgress& progress) {
   Options options;
-  options.search = search_variant(variant);
+  options.variant = variant;
   options.threads = threads;
   options.progress = progress.hook();
   return options;
@@ -258,7 +258,7 @@ PYBIND11_MODULE(_drange, m) {
     return d;
   }, py::arg("points"), py::arg("simplices"), py::arg("max_problems"));
 
-  m.attr("search_variant_names") = search_variant_names();
+  m.attr("variant_names") = variant_names();
 }
 
 }  // namespace drange::python

@@ -24,7 +24,7 @@ std::vector<drange::test::Simplex> canonical(const drange::Triangulation& t) { r
 
 drange::Triangulation triangulate(const PointCloud& points, const char* variant) {
   drange::Options options;
-  options.search = drange::search_variant(variant);
+  options.variant = variant;
   options.threads = 1;
   return drange::delaunay(points, options);
 }

@@ -1,10 +1,18 @@
-// delaunay/options.cpp: the named search variants.
+// delaunay/search_options.cpp: the named search variants.
+#include "delaunay/search_options.hpp"
+
 #include <string>
 
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
 
 namespace drange {
+
+const char* variant_names() {
+  return "full, scan, kdtree, no-prune, no-order, paper, no-bottom-up, no-seed, no-ball, no-shell, no-tie-memory, no-slab, no-hull, fifo, spatial";
+}
+
+namespace engine {
 
 SearchOptions search_variant(const std::string& name) {
   constexpr FacetOrder automatic = FacetOrder::automatic, fifo = FacetOrder::fifo;
@@ -24,11 +32,8 @@ SearchOptions search_variant(const std::string& name) {
   if (name == "no-hull") return SearchOptions{true, true, true, true, true, true, true, true, true, automatic, false};
   if (name == "fifo") return SearchOptions{true, true, true, true, true, true, true, true, true, fifo, true};
   if (name == "spatial") return SearchOptions{true, true, true, true, true, true, true, true, true, FacetOrder::spatial, true};
-  throw UsageError("unknown search variant '" + name + "' (expected one of: " + search_variant_names() + ")");
+  throw UsageError("unknown search variant '" + name + "' (expected one of: " + variant_names() + ")");
 }
 
-const char* search_variant_names() {
-  return "full, scan, kdtree, no-prune, no-order, paper, no-bottom-up, no-seed, no-ball, no-shell, no-tie-memory, no-slab, no-hull, fifo, spatial";
-}
-
+}  // namespace engine
 }  // namespace drange
