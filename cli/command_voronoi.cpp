@@ -42,18 +42,18 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
     throw UsageError("--box clips the cells, which Qhull's layout does not hold: add --cells FILE, or choose "
                      "--format json, npz, vtu or off");
   const bool quiet = arguments.has("quiet");
-  const int threads = threads_option(arguments);
-  Options options;
-  options.variant = variant_option(arguments);
-  options.threads = threads;
+  VoronoiOptions options;
+  options.delaunay.variant = variant_option(arguments);
+  options.delaunay.threads = threads_option(arguments);
+  options.cell_volumes = !arguments.has("no-volumes");
 
   const PointCloud points = read_points(input);
   expect_svg_dimension(arguments, points.dim);
-  options.progress = make_progress_reporter(points.size(), points.dim, quiet);
-  const Triangulation triangulation = delaunay(points, options);
+  options.delaunay.progress = make_progress_reporter(points.size(), points.dim, quiet);
+  const Triangulation triangulation = delaunay(points, options.delaunay);
   if (!triangulation.duplicates.empty() && !quiet)
     std::cerr << "drange: " << duplicates_message(triangulation.duplicates) << '\n';
-  const Voronoi diagram = voronoi(points, triangulation, !arguments.has("no-volumes"), threads);
+  const Voronoi diagram = voronoi(points, triangulation, options);
 
   // Clipped cells when asked for (--cells, --box, or an output format that draws them).
   const bool want_cells = arguments.has("cells") || arguments.has("box") || needs_cells(format);

@@ -220,12 +220,14 @@ PYBIND11_MODULE(_drange, m) {
   m.def("voronoi", [](Points points, const std::string& variant, int threads, bool cell_volumes, py::object progress) {
     const PointsView input = points_view(points, "points");
     PythonProgress reporter(std::move(progress));
-    const Options options = engine_options(variant, threads, reporter);
+    VoronoiOptions options;
+    options.delaunay = engine_options(variant, threads, reporter);
+    options.cell_volumes = cell_volumes;
     auto diagram = std::make_unique<Diagram>();
     diagram->result = reporter.run([&] {
-      const Triangulation triangulation = delaunay(input, options);
+      const Triangulation triangulation = delaunay(input, options.delaunay);
       diagram->statistics = triangulation.stats;
-      return voronoi(input, triangulation, cell_volumes, threads);
+      return voronoi(input, triangulation, options);
     });
     diagram->points = std::move(points);
     return diagram;
