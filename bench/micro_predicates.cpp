@@ -186,7 +186,7 @@ void BM_FacetSearch(benchmark::State& state) {
     f.sigma = -drange::geometry::orientation(frame, rows.data());
     facets.push_back(f);
   }
-  drange::engine::FacetSearch search(store, drange::SearchOptions{});
+  drange::engine::FacetSearch search(store, drange::engine::SearchOptions{});
   drange::engine::SearchCounters counters;
   std::size_t i = 0;
   std::uint64_t searches = 0;

@@ -16,7 +16,7 @@ namespace drange::bench {
 
 struct RunOptions {
   int threads = 1;                // drange and CGAL's parallel 3D; every other peer is sequential
-  std::string variant = "full";   // drange's search variant (drange::search_variant)
+  std::string variant = "full";   // drange's search variant (drange::Options::variant)
 };
 
 struct PeerResult {

@@ -11,7 +11,7 @@ namespace drange::bench {
 
 PeerResult run_drange(const PointCloud& points, const RunOptions& options) {
   Options o;
-  o.search = search_variant(options.variant);
+  o.variant = options.variant;
   o.threads = options.threads;
   const auto start = Clock::now();
   const Triangulation t = delaunay(points, o);
@@ -24,8 +24,8 @@ PeerResult run_drange(const PointCloud& points, const RunOptions& options) {
   char extra[256];
   std::snprintf(extra, sizeof extra,
                 "variant=%s calls_per_simplex=%.2f tested_per_simplex=%.2f search_seconds=%.4f exact_fallbacks=%zu",
-                options.variant.c_str(), s.calls_per_simplex(), double(s.points_tested) * per, s.seconds_search,
-                s.exact_fallbacks);
+                options.variant.c_str(), s.calls_per_simplex(), double(s.debug.points_tested) * per, s.seconds_search,
+                s.debug.exact_fallbacks);
   r.extra = extra;
   return r;
 }

@@ -30,6 +30,14 @@ int threads_option(const Arguments& arguments) {
   return static_cast<int>(parse_integer_argument("--threads", arguments.value_or("threads", ""), 0, 1024));
 }
 
+std::string variant_option(const Arguments& arguments) {
+  const std::string name = arguments.value_or("variant", "full");
+  const std::string names = std::string(", ") + variant_names() + ", ";
+  if (names.find(", " + name + ", ") == std::string::npos)
+    throw UsageError("--variant: unknown variant '" + name + "' (expected one of: " + variant_names() + ")");
+  return name;
+}
+
 bool standard_input_has_points() {
   return !isatty(STDIN_FILENO) && std::cin.peek() != std::char_traits<char>::eof();
 }

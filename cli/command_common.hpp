@@ -30,6 +30,10 @@ void expect_svg_dimension(const Arguments& arguments, int dim);
 // to 1024. Throws UsageError "--threads must be an integer from 0 to 1024, got 'text'".
 int threads_option(const Arguments& arguments);
 
+// The --variant value (Options::variant, default "full"), checked against variant_names()
+// before any input is read. Throws UsageError naming the value and the accepted names.
+std::string variant_option(const Arguments& arguments);
+
 // Throws UsageError when two output options name the same file (other than none).
 void expect_distinct_outputs(const Arguments& arguments, const std::vector<const char*>& options,
                              const std::string& main_output);

@@ -31,7 +31,7 @@ int triangulate_file(const std::string& input, const Arguments& arguments) {
                                                       : output_format_from_path(output, OutputFormat::Qhull);
   const bool quiet = arguments.has("quiet");
   Options options;
-  options.search = search_variant(arguments.value_or("variant", "full"));
+  options.variant = variant_option(arguments);
   options.threads = threads_option(arguments);
   options.compute_neighbors = arguments.has("neighbors") || format != OutputFormat::Qhull;
 
@@ -82,14 +82,16 @@ std::string delaunay_help() {
              "      --svg FILE        also draw the triangulation (2D) as an SVG picture\n"
              "      --circles         draw the circumcircles too (with --svg)\n"
              "      --stats           print the run's statistics (key=value) to standard error\n"
-             "      --variant NAME    the search variant, to measure each optimisation: one of\n"
+             "      --variant NAME    an ablation variant of the search, to measure what each of\n"
+             "                        its steps gains: one of\n"
              "                        ") +
-         search_variant_names() +
+         variant_names() +
          "\n"
-         "                        (default full); fifo and spatial fix the order in which\n"
-         "                        open facets are searched (the paper's FIFO, or the spatial\n"
-         "                        order that full uses in 3D to 5D): the simplices are the\n"
-         "                        same, listed in another order\n"
+         "                        (default full). Every variant gives the same simplices;\n"
+         "                        fifo and spatial fix the order in which open facets are\n"
+         "                        searched (the paper's FIFO, or the spatial order that full\n"
+         "                        uses in 3D to 5D), and scan, kdtree and paper use FIFO:\n"
+         "                        these number and list the simplices in another order\n"
          "      --threads N       threads to use (default 0: one per core); the output is the\n"
          "                        same for every N\n"
          "  -q, --quiet           no progress line, no report of duplicate points\n"
@@ -130,7 +132,7 @@ int run_delaunay(const std::vector<std::string>& args) {
         throw UsageError(std::string("--") + option + " needs an INPUT file (without INPUT, a demonstration runs)");
       }
     }
-    return run_delaunay_demo(arguments.value_or("variant", "full"), threads_option(arguments), arguments.has("stats"));
+    return run_delaunay_demo(variant_option(arguments), threads_option(arguments), arguments.has("stats"));
   }
   return triangulate_file(arguments.positionals[0], arguments);
 }

@@ -42,18 +42,18 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
     throw UsageError("--box clips the cells, which Qhull's layout does not hold: add --cells FILE, or choose "
                      "--format json, npz, vtu or off");
   const bool quiet = arguments.has("quiet");
-  const int threads = threads_option(arguments);
+  VoronoiOptions options;
+  options.delaunay.variant = variant_option(arguments);
+  options.delaunay.threads = threads_option(arguments);
+  options.cell_volumes = !arguments.has("no-volumes");
 
   const PointCloud points = read_points(input);
   expect_svg_dimension(arguments, points.dim);
-  Options options;
-  options.search = search_variant(arguments.value_or("variant", "full"));
-  options.threads = threads;
-  options.progress = make_progress_reporter(points.size(), points.dim, quiet);
-  const Triangulation triangulation = delaunay(points, options);
+  options.delaunay.progress = make_progress_reporter(points.size(), points.dim, quiet);
+  const Triangulation triangulation = delaunay(points, options.delaunay);
   if (!triangulation.duplicates.empty() && !quiet)
     std::cerr << "drange: " << duplicates_message(triangulation.duplicates) << '\n';
-  const Voronoi diagram = voronoi(points, triangulation, !arguments.has("no-volumes"), threads);
+  const Voronoi diagram = voronoi(points, triangulation, options);
 
   // Clipped cells when asked for (--cells, --box, or an output format that draws them).
   const bool want_cells = arguments.has("cells") || arguments.has("box") || needs_cells(format);
@@ -108,7 +108,8 @@ std::string voronoi_help() {
          "      --circles         draw the circumcircles too (with --svg)\n"
          "      --no-volumes      skip the volumes of the bounded cells (costly for d >= 6)\n"
          "      --stats           print the run's statistics (key=value) to standard error\n"
-         "      --variant NAME    the Delaunay search variant (see drange delaunay --help)\n"
+         "      --variant NAME    an ablation variant of the Delaunay search, for measurements\n"
+         "                        (see drange delaunay --help)\n"
          "      --threads N       threads for the triangulation and the diagram (default 0: one\n"
          "                        per core); the output is the same for every N\n"
          "  -q, --quiet           no progress line, no report of duplicate points\n"

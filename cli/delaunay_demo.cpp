@@ -51,7 +51,7 @@ void print_summary(const Statistics& stats) {
 
 int run_delaunay_demo(const std::string& variant, int threads, bool print_stats) {
   Options options;
-  options.search = search_variant(variant);
+  options.variant = variant;
   options.threads = threads;
   options.compute_neighbors = true;
   std::printf("No INPUT given: triangulating %zu uniform random points in the unit cube, %dD, seed %llu.\n\n",

@@ -298,6 +298,15 @@ TEST(Cli, DelaunayStatsAndVariant) {
   EXPECT_EQ(run.code, 2);
   EXPECT_TRUE(contains(run.err, "fastest")) << run.err;
   EXPECT_TRUE(contains(run.err, "Try 'drange delaunay --help'."));
+  // Checked before anything is read or run: not the missing file's error, no demonstration.
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"delaunay", dir.file("missing.txt"), "--variant", "ful"},
+                                               std::vector<std::string>{"delaunay", "--variant", "ful"},
+                                               std::vector<std::string>{"voronoi", dir.file("missing.txt"), "--variant", "ful"}}) {
+    run = run_cli(dir, args);
+    EXPECT_EQ(run.code, 2) << args[1];
+    EXPECT_TRUE(contains(run.err, "--variant: unknown variant 'ful' (expected one of: full, ")) << run.err;
+    EXPECT_EQ(run.out, "") << args[1];
+  }
 }
 
 // --threads changes nothing in the output: the same bytes for the simplices, the neighbours and

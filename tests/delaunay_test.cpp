@@ -489,13 +489,22 @@ TEST(DelaunayVariants, EveryVariantGivesTheSameTriangulation) {
     const auto reference = canonical(drange::delaunay(points));
     for (const char* name : {"scan", "kdtree", "no-prune", "no-order", "paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-tie-memory", "no-slab", "no-hull", "fifo", "spatial"}) {
       drange::Options options;
-      options.search = drange::search_variant(name);
+      options.variant = name;
       const Triangulation t = drange::delaunay(points, options);
       EXPECT_EQ(canonical(t), reference) << name << " d=" << points.dim;
       EXPECT_GT(t.stats.search_calls, 0u);
     }
   }
-  EXPECT_THROW(drange::search_variant("fast"), drange::UsageError);
+  drange::Options unknown;
+  unknown.variant = "fast";
+  try {
+    drange::delaunay(inputs[0], unknown);
+    ADD_FAILURE() << "no exception for an unknown variant";
+  } catch (const drange::UsageError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("'fast'"), std::string::npos) << message;
+    EXPECT_NE(message.find(drange::variant_names()), std::string::npos) << message;
+  }
 }
 
 // The bottom-up walk, the seeds and the ball query change the order in which points are met,
@@ -528,7 +537,7 @@ TEST(DelaunayVariants, BottomUpAndSeedsChangeNothingOnDegenerateInputs) {
     const auto reference = canonical(drange::delaunay(points));
     for (const char* variant : {"paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-slab", "scan", "fifo", "spatial"}) {
       drange::Options options;
-      options.search = drange::search_variant(variant);
+      options.variant = variant;
       EXPECT_EQ(canonical(drange::delaunay(points, options)), reference) << name << ", " << variant;
     }
   }
@@ -539,7 +548,7 @@ TEST(DelaunayVariants, BottomUpSeedsAndBallReduceTheWork) {
     const PointCloud points = drange::generate_points(Distribution::Uniform, d == 2 ? 20000 : 5000, d, 24);
     auto stats = [&](const char* name) {
       drange::Options options;
-      options.search = drange::search_variant(name);
+      options.variant = name;
       return drange::delaunay(points, options).stats;
     };
     const drange::Statistics full = stats("full"), paper = stats("paper"), no_seed = stats("no-seed"),
@@ -548,10 +557,10 @@ TEST(DelaunayVariants, BottomUpSeedsAndBallReduceTheWork) {
     EXPECT_LT(full.search_calls, no_bottom_up.search_calls) << "d=" << d;
     EXPECT_LT(no_seed.search_calls, paper.search_calls) << "d=" << d;
     // The seeds start the search with a good candidate: fewer improvements, fewer points tested.
-    EXPECT_LT(full.candidates, no_seed.candidates) << "d=" << d;
-    EXPECT_LT(full.points_tested, no_seed.points_tested) << "d=" << d;
+    EXPECT_LT(full.debug.candidates, no_seed.debug.candidates) << "d=" << d;
+    EXPECT_LT(full.debug.points_tested, no_seed.debug.points_tested) << "d=" << d;
     // The ball skips the corners of its bounding box: fewer points tested.
-    EXPECT_LT(full.points_tested, stats("no-ball").points_tested) << "d=" << d;
+    EXPECT_LT(full.debug.points_tested, stats("no-ball").debug.points_tested) << "d=" << d;
   }
 }
 
@@ -559,7 +568,7 @@ TEST(DelaunayVariants, PruningAndOrderingReduceTheWork) {
   const PointCloud points = drange::generate_points(Distribution::Uniform, 20000, 2, 23);
   auto calls = [&](const char* name) {
     drange::Options options;
-    options.search = drange::search_variant(name);
+    options.variant = name;
     return drange::delaunay(points, options).stats.search_calls;
   };
   const auto full = calls("full");
@@ -601,7 +610,7 @@ TEST(DelaunayVariants, PlateauFacetsPruneTheirFlatSide) {
     // bound with the flat axis, about three times as many without it, when every search from a
     // plateau facet visits the whole plateau before its first candidate; the gap grows with
     // the plateau.
-    EXPECT_LT(double(t.stats.points_tested) / double(t.stats.simplices), 8.0) << "flat axis " << flat;
+    EXPECT_LT(double(t.stats.debug.points_tested) / double(t.stats.simplices), 8.0) << "flat axis " << flat;
   }
 }
 
@@ -620,7 +629,7 @@ TEST(DelaunayVariants, LongSearchesOnACylinderPruneTheClosedSide) {
   const Triangulation t = drange::delaunay(cylinder);
   expect_valid(cylinder, t, "cylinder");
   drange::Options no_prune;
-  no_prune.search = drange::search_variant("no-prune");
+  no_prune.variant = "no-prune";
   EXPECT_EQ(canonical(t), canonical(drange::delaunay(cylinder, no_prune)));
   // Nodes entered per simplex (a deterministic work counter, not a time): the bound lies between
   // the count with the closed side pruned only before the first ball and the lower one with it
@@ -644,11 +653,11 @@ TEST(DelaunayVariants, TheBestPointOfABlockIsTriedFirstIn2D) {
   const Triangulation t = drange::delaunay(circles);
   expect_valid(circles, t, "two circles");
   drange::Options no_prune;
-  no_prune.search = drange::search_variant("no-prune");
+  no_prune.variant = "no-prune";
   EXPECT_EQ(canonical(t), canonical(drange::delaunay(circles, no_prune)));
   // Candidates per simplex (a deterministic work counter, not a time): the bound lies between
   // the count in index order and the lower one with the best first (one seed per point).
-  EXPECT_LT(double(t.stats.candidates) / double(t.stats.simplices), 4.0);
+  EXPECT_LT(double(t.stats.debug.candidates) / double(t.stats.simplices), 4.0);
 }
 
 TEST(DelaunayVariants, CandidatesOnADecimalLatticePlaneGetABall) {
@@ -665,7 +674,7 @@ TEST(DelaunayVariants, CandidatesOnADecimalLatticePlaneGetABall) {
   expect_valid(points, t, "points rounded to 0.04");
   // Points tested per simplex (a deterministic work counter, not a time): well below the bound
   // with the double-double ball, several times above it without.
-  EXPECT_LT(double(t.stats.points_tested) / double(t.stats.simplices), 8.0);
+  EXPECT_LT(double(t.stats.debug.points_tested) / double(t.stats.simplices), 8.0);
 }
 
 TEST(DelaunayStatistics, CountsAreConsistent) {
@@ -682,6 +691,23 @@ TEST(DelaunayStatistics, CountsAreConsistent) {
   EXPECT_GT(s.peak_rss_bytes, 0u);
   EXPECT_GE(s.seconds_total, s.seconds_search);
   EXPECT_NE(s.summary().find("simplices=" + std::to_string(t.size())), std::string::npos);
+}
+
+// scripts/ab_time.sh and bench/ read the --stats line by its keys: they stay, in this order,
+// the debug counters included.
+TEST(DelaunayStatistics, SummaryKeysAreFixed) {
+  const PointCloud points = drange::generate_points(Distribution::Uniform, 2000, 3, 32);
+  const drange::Statistics s = drange::delaunay(points).stats;
+  std::vector<std::string> keys;
+  std::istringstream line(s.summary());
+  for (std::string pair; line >> pair;) keys.push_back(pair.substr(0, pair.find('=')));
+  const std::vector<std::string> expected = {
+      "points", "distinct", "simplices", "hull_facets", "calls_per_simplex", "tested_per_simplex",
+      "candidates_per_simplex", "exact_fallbacks", "max_open_facets", "shell_spheres", "threads", "wasted_searches",
+      "time_kdtree", "time_first_facet", "time_search", "time_total", "peak_rss"};
+  EXPECT_EQ(keys, expected) << s.summary();
+  EXPECT_NE(s.summary().find(" max_open_facets=" + std::to_string(s.debug.max_open_facets) + " "), std::string::npos);
+  EXPECT_NE(s.summary().find(" exact_fallbacks=" + std::to_string(s.debug.exact_fallbacks) + " "), std::string::npos);
 }
 
 // The room made for the simplices before the search (simplex_estimate.hpp) is address space

@@ -1,4 +1,4 @@
-// Tests of SearchOptions::facet_order (the order in which open facets take their turns,
+// Tests of engine::SearchOptions::facet_order (the order in which open facets take their turns,
 // triangulate.cpp): the spatial order gives the FIFO order's simplices, in another order, on
 // general and degenerate inputs in 2D to 4D; its output is byte for byte the same for 1 to 4
 // threads; `automatic` picks it by dimension; and it keeps the 3D frontier smaller.
@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "delaunay/search_options.hpp"
+#include "delaunay/triangulate.hpp"
 #include "drange/check.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/generate.hpp"
@@ -17,15 +19,17 @@
 namespace {
 
 using drange::Distribution;
-using drange::FacetOrder;
+using drange::engine::FacetOrder;
+using drange::engine::SearchOptions;
 using drange::PointCloud;
 using drange::Triangulation;
 
 Triangulation run(const PointCloud& points, FacetOrder order, int threads = 1) {
   drange::Options options;
-  options.search.facet_order = order;
   options.threads = threads;
-  return drange::delaunay(points, options);
+  SearchOptions search;
+  search.facet_order = order;
+  return drange::engine::triangulate(points, options, search);
 }
 
 PointCloud grid(int d, int k) {
@@ -100,7 +104,7 @@ TEST(FacetOrder, SpatialIsTheSameForEveryThreadCount) {
       EXPECT_TRUE(t.neighbors == serial.neighbors) << at << ": neighbours differ";
       EXPECT_EQ(t.stats.simplices, serial.stats.simplices) << at;
       EXPECT_EQ(t.stats.hull_facets, serial.stats.hull_facets) << at;
-      EXPECT_EQ(t.stats.max_open_facets, serial.stats.max_open_facets) << at;
+      EXPECT_EQ(t.stats.debug.max_open_facets, serial.stats.debug.max_open_facets) << at;
       EXPECT_EQ(t.stats.threads, static_cast<std::size_t>(threads)) << at;
     }
   }
@@ -111,18 +115,19 @@ TEST(FacetOrder, SpatialIsTheSameForEveryThreadCount) {
 TEST(FacetOrder, SpatialWorkCountersAreTheSameForEveryThreadCount) {
   const PointCloud points = drange::generate_points(Distribution::Uniform, 30000, 3, 10);
   drange::Options options;
-  options.search.facet_order = FacetOrder::spatial;
-  options.search.seed_candidate = false;
   options.threads = 1;
-  const Triangulation serial = drange::delaunay(points, options);
+  SearchOptions search;
+  search.facet_order = FacetOrder::spatial;
+  search.seed_candidate = false;
+  const Triangulation serial = drange::engine::triangulate(points, options, search);
   for (const int threads : {2, 4}) {
     options.threads = threads;
-    const Triangulation t = drange::delaunay(points, options);
+    const Triangulation t = drange::engine::triangulate(points, options, search);
     EXPECT_TRUE(t.simplices == serial.simplices) << threads;
     EXPECT_EQ(t.stats.search_calls, serial.stats.search_calls) << threads;
-    EXPECT_EQ(t.stats.points_tested, serial.stats.points_tested) << threads;
-    EXPECT_EQ(t.stats.candidates, serial.stats.candidates) << threads;
-    EXPECT_EQ(t.stats.exact_fallbacks, serial.stats.exact_fallbacks) << threads;
+    EXPECT_EQ(t.stats.debug.points_tested, serial.stats.debug.points_tested) << threads;
+    EXPECT_EQ(t.stats.debug.candidates, serial.stats.debug.candidates) << threads;
+    EXPECT_EQ(t.stats.debug.exact_fallbacks, serial.stats.debug.exact_fallbacks) << threads;
   }
 }
 
@@ -136,19 +141,20 @@ TEST(FacetOrder, AutomaticIsSpatialInThreeToFiveDimensionsAndFifoElsewhere) {
     const PointCloud points = drange::generate_points(Distribution::Uniform, d == 5 ? 600 : 3000, d, 12);
     EXPECT_EQ(run(points, FacetOrder::automatic).simplices, run(points, FacetOrder::spatial).simplices) << d;
   }
-  EXPECT_EQ(drange::Options{}.search.facet_order, FacetOrder::automatic);
-  EXPECT_EQ(drange::search_variant("full").facet_order, FacetOrder::automatic);
-  EXPECT_EQ(drange::search_variant("fifo").facet_order, FacetOrder::fifo);
-  EXPECT_EQ(drange::search_variant("paper").facet_order, FacetOrder::fifo);
-  EXPECT_EQ(drange::search_variant("spatial").facet_order, FacetOrder::spatial);
+  EXPECT_EQ(drange::Options{}.variant, "full");
+  EXPECT_EQ(SearchOptions{}.facet_order, FacetOrder::automatic);
+  EXPECT_EQ(drange::engine::search_variant("full").facet_order, FacetOrder::automatic);
+  EXPECT_EQ(drange::engine::search_variant("fifo").facet_order, FacetOrder::fifo);
+  EXPECT_EQ(drange::engine::search_variant("paper").facet_order, FacetOrder::fifo);
+  EXPECT_EQ(drange::engine::search_variant("spatial").facet_order, FacetOrder::spatial);
 }
 
 // What the order is for: in 3D the FIFO frontier grows as a ball's surface, the spatial one
 // sweeps through space (a count, not a time: deterministic).
 TEST(FacetOrder, SpatialKeepsTheThreeDimensionalFrontierSmall) {
   const PointCloud points = drange::generate_points(Distribution::Uniform, 50000, 3, 13);
-  const std::size_t fifo = run(points, FacetOrder::fifo).stats.max_open_facets;
-  const std::size_t spatial = run(points, FacetOrder::spatial).stats.max_open_facets;
+  const std::size_t fifo = run(points, FacetOrder::fifo).stats.debug.max_open_facets;
+  const std::size_t spatial = run(points, FacetOrder::spatial).stats.debug.max_open_facets;
   EXPECT_LT(spatial * 2, fifo) << "spatial " << spatial << ", fifo " << fifo;
 }
 

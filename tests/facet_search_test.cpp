@@ -69,7 +69,7 @@ void expect_kernels_agree(const PointCloud& points, const std::string& what) {
   const SampledFacets sample(points, drange::engine::search_leaf_size(points.dim));
   const int d = points.dim;
   for (const char* variant : {"full", "paper", "no-ball"}) {
-    const drange::SearchOptions options = drange::search_variant(variant);
+    const drange::engine::SearchOptions options = drange::engine::search_variant(variant);
     FacetSearch fixed(sample.store, options, FacetSearch::KernelChoice::FixedDimension);
     FacetSearch any(sample.store, options, FacetSearch::KernelChoice::AnyDimension);
     drange::engine::SearchCounters fixed_counters, any_counters;
@@ -115,9 +115,9 @@ TEST(FacetSearch, FixedDimensionKernelsMatchTheAnyDimensionKernelOnIntegerPoints
 // groups by their boxes.
 void expect_tree_search_matches_scan(const PointCloud& points, int leaf_size, const std::string& what) {
   const SampledFacets sample(points, leaf_size);
-  FacetSearch scan(sample.store, drange::search_variant("scan"), FacetSearch::KernelChoice::AnyDimension);
+  FacetSearch scan(sample.store, drange::engine::search_variant("scan"), FacetSearch::KernelChoice::AnyDimension);
   for (const char* variant : {"full", "no-seed", "no-bottom-up", "no-prune"}) {
-    const drange::SearchOptions options = drange::search_variant(variant);
+    const drange::engine::SearchOptions options = drange::engine::search_variant(variant);
     FacetSearch fixed(sample.store, options, FacetSearch::KernelChoice::FixedDimension);
     FacetSearch any(sample.store, options, FacetSearch::KernelChoice::AnyDimension);
     drange::engine::SearchCounters counters;
@@ -167,7 +167,7 @@ TEST(FacetSearch, WideVectorLoopsMatchTheTwoDoubleOnes) {
     for (int leaf_size : {drange::engine::search_leaf_size(d), 13, 200}) {
       const SampledFacets sample(points, leaf_size);
       for (const auto choice : {FacetSearch::KernelChoice::FixedDimension, FacetSearch::KernelChoice::AnyDimension}) {
-        const drange::SearchOptions options = drange::search_variant("full");
+        const drange::engine::SearchOptions options = drange::engine::search_variant("full");
         FacetSearch wide(sample.store, options, choice, FacetSearch::VectorWidth::Widest);
         FacetSearch narrow(sample.store, options, choice, FacetSearch::VectorWidth::TwoDoubles);
         drange::engine::SearchCounters wide_counters, narrow_counters;

@@ -146,7 +146,7 @@ TEST(HullEdges, AreKeptOnlyForLargeHulls) {
 
 drange::Triangulation triangulate(const PointCloud& points, const char* variant, int threads) {
   drange::Options options;
-  options.search = drange::search_variant(variant);
+  options.variant = variant;
   options.threads = threads;
   return drange::delaunay(points, options);
 }

@@ -80,7 +80,7 @@ drange::PointCloud cylindrical_grid(int rings, int angles, int levels) {
 
 drange::Triangulation triangulate(const drange::PointCloud& points, const char* variant, int threads = 1) {
   drange::Options options;
-  options.search = drange::search_variant(variant);
+  options.variant = variant;
   options.threads = threads;
   return drange::delaunay(points, options);
 }
@@ -95,8 +95,8 @@ TEST(KnownTies, CylindricalGridTheSameWithFewerExactEvaluations) {
   // With the memory, well under two thirds of the exact evaluations made without it, and a
   // smaller share still on larger grids of this kind. (The fixed-width stage, asked first
   // where ties dominate, decides some ties without the memory that it would have known.)
-  EXPECT_GT(without.stats.exact_fallbacks, 10000u);
-  EXPECT_LT(with.stats.exact_fallbacks * 3, without.stats.exact_fallbacks * 2);
+  EXPECT_GT(without.stats.debug.exact_fallbacks, 10000u);
+  EXPECT_LT(with.stats.debug.exact_fallbacks * 3, without.stats.debug.exact_fallbacks * 2);
 }
 
 }  // namespace

@@ -176,7 +176,7 @@ TEST(NodeSlabs, ABallThatMissesASlabHoldsNoPointOfItsNode) {
 
 drange::Triangulation triangulate(const PointCloud& points, const char* variant) {
   drange::Options options;
-  options.search = drange::search_variant(variant);
+  options.variant = variant;
   options.threads = 1;  // the work counted is then the same on every run
   return drange::delaunay(points, options);
 }

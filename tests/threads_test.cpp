@@ -37,13 +37,13 @@ PointCloud grid(int d, int k) {
 Triangulation run(const PointCloud& points, int threads, bool seeds = true) {
   drange::Options options;
   options.threads = threads;
-  options.search.seed_candidate = seeds;
+  options.variant = seeds ? "full" : "no-seed";
   return drange::delaunay(points, options);
 }
 
 // Every thread count gives the serial run's arrays, byte for byte, and its statistics (all
 // but the times, the thread count and the wasted searches); the serial result is valid.
-// The seed candidates (SearchOptions::seed_candidate) come from the recent searches of all
+// The seed candidates (variant no-seed leaves them out) come from the recent searches of all
 // threads, in the order the threads happened to make them, so with them the work counters
 // (calls, points tested, candidates, exact fallbacks) depend on the timing; without them,
 // they do not.
@@ -57,7 +57,7 @@ void expect_same_for_every_thread_count(const std::string& name, const PointClou
   const std::string what = name + (seeds ? "" : ", no seeds");
   const Triangulation serial = run(points, 1, seeds);
   EXPECT_EQ(serial.stats.threads, 1u) << what;
-  EXPECT_EQ(serial.stats.wasted_searches, 0u) << what;
+  EXPECT_EQ(serial.stats.debug.wasted_searches, 0u) << what;
   const drange::CheckReport report = drange::check_triangulation(points, serial.simplices);
   EXPECT_TRUE(report.valid) << what << ": " << (report.problems.empty() ? "" : report.problems.front());
   for (const int threads : kThreadCounts) {
@@ -77,12 +77,12 @@ void expect_same_for_every_thread_count(const std::string& name, const PointClou
     EXPECT_EQ(a.distinct_points, b.distinct_points) << at;
     EXPECT_EQ(a.simplices, b.simplices) << at;
     EXPECT_EQ(a.hull_facets, b.hull_facets) << at;
-    EXPECT_EQ(a.max_open_facets, b.max_open_facets) << at;
+    EXPECT_EQ(a.debug.max_open_facets, b.debug.max_open_facets) << at;
     if (seeds) continue;
     EXPECT_EQ(a.search_calls, b.search_calls) << at;
-    EXPECT_EQ(a.points_tested, b.points_tested) << at;
-    EXPECT_EQ(a.candidates, b.candidates) << at;
-    EXPECT_EQ(a.exact_fallbacks, b.exact_fallbacks) << at;
+    EXPECT_EQ(a.debug.points_tested, b.debug.points_tested) << at;
+    EXPECT_EQ(a.debug.candidates, b.debug.candidates) << at;
+    EXPECT_EQ(a.debug.exact_fallbacks, b.debug.exact_fallbacks) << at;
   }
 }
 

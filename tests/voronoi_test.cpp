@@ -360,9 +360,12 @@ TEST(Voronoi, EveryThreadCountGivesTheSameDiagram) {
                               RandomCase{Distribution::Uniform, 1500, 4}, RandomCase{Distribution::Grid, 625, 4}}) {
     const PointCloud points = generate_points(c.distribution, c.n, c.d, 5);
     const Triangulation t = delaunay(points);
-    const Voronoi one = voronoi(points, t, true, 1);
+    VoronoiOptions options;
+    options.delaunay.threads = 1;
+    const Voronoi one = voronoi(points, t, options);
     for (const int threads : {2, 3, 0}) {
-      const Voronoi other = voronoi(points, t, true, threads);
+      options.delaunay.threads = threads;
+      const Voronoi other = voronoi(points, t, options);
       SCOPED_TRACE(std::string(family_name(c.distribution)) + " " + std::to_string(c.d) + "D, threads " + std::to_string(threads));
       EXPECT_EQ(one.vertices, other.vertices);
       EXPECT_EQ(one.simplex_vertex, other.simplex_vertex);
@@ -377,7 +380,9 @@ TEST(Voronoi, EveryThreadCountGivesTheSameDiagram) {
     }
   }
   const PointCloud points = generate_points(Distribution::Uniform, 50, 2, 1);
-  EXPECT_THROW(voronoi(points, delaunay(points), true, -1), UsageError);
+  VoronoiOptions negative;
+  negative.delaunay.threads = -1;
+  EXPECT_THROW(voronoi(points, delaunay(points), negative), UsageError);
 }
 
 TEST(Voronoi, VolumesCanBeLeftOut) {
@@ -385,6 +390,8 @@ TEST(Voronoi, VolumesCanBeLeftOut) {
   VoronoiOptions options;
   options.cell_volumes = false;
   EXPECT_TRUE(voronoi(points, options).volumes.empty());
+  EXPECT_TRUE(voronoi(points, delaunay(points), options).volumes.empty());
+  EXPECT_FALSE(voronoi(points, delaunay(points)).volumes.empty());
 }
 
 }  // namespace

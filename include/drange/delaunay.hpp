@@ -13,74 +13,20 @@
 
 namespace drange {
 
-// The order in which the open facets take their turns (paper, section 2.3: FIFO). It changes
-// the simplices' numbering and order, never the set of simplices.
-enum class FacetOrder {
-  automatic,  // by dimension, where each was faster: spatial in 3D to 5D, FIFO in 2D and from 6D on
-  fifo,       // the paper's queue
-  // The facet whose smallest vertex is least in the kd-tree's point order (a space-filling
-  // one) comes first, by blocks of points, FIFO within a block and in a fixed window of facets
-  // taken ahead: the frontier sweeps through space and stays small.
-  spatial,
-};
-
-// How the next simplex of an open facet is searched (paper, section 2.4), and which facet is
-// searched next. The defaults are the full algorithm; the switches exist so that the gain of
-// each step can be measured. The first three are the paper's; the next three are ours (they
-// change the order in which points are met, never which point is found).
-struct SearchOptions {
-  bool use_kdtree = true;               // false: scan every point for every facet (the slow direct algorithm)
-  bool prune_closed_side = true;        // 2.4.1: skip kd-tree nodes wholly on the closed side of the facet
-  bool visit_facet_child_first = true;  // 2.4.2: descend first into the child that holds the facet
-  // Walk the kd-tree bottom-up from the leaf of the facet's first vertex, climbing only until
-  // the query box lies inside the subtree walked so far, instead of descending from the root.
-  bool bottom_up = true;
-  // Before the walk, try as candidates the points found by the last searches of facets that
-  // share a vertex with this one (Delaunay neighbours of its vertices): the first query box is
-  // then already small.
-  bool seed_candidate = true;
-  // Query the candidate's ball itself (enlarged by its error bound), not only its bounding box
-  // (2.4 approximates the sphere by a hypercube, "the rougher the larger d is").
-  bool ball_query = true;
-  // On points near one sphere (cospherical up to rounding), or near a few concentric ones, or
-  // near spheres about several centres (bubbles), also skip the kd-tree nodes whose points'
-  // offsets from their sphere prove them outside the candidate's sphere, where the ball cannot
-  // (every candidate's sphere is then the facet's sphere, within rounding), and decide points
-  // by the exact form of the test around that sphere's centre instead of GMP.
-  bool sphere_shell = true;
-  // Remember the points that an exact evaluation proved on a facet's hyperplane or on a
-  // candidate's sphere, and skip the exact evaluation when a later search meets a subset of them
-  // again (ties that no floating-point filter decides: exactly cospherical points whose
-  // coordinates are not dyadic, as in a grid in cylindrical coordinates).
-  bool remember_ties = true;
-  // On points sampled from surfaces, also skip the kd-tree nodes whose points lie in a thin slab
-  // across their patch's normal that misses the candidate's ball or lies on the closed side of
-  // the facet (src/delaunay/node_slabs.hpp), where their axis-aligned boxes do not.
-  bool node_slabs = true;
-  // Which open facet is searched next (ours too: it changes the simplices' order, not the set).
-  FacetOrder facet_order = FacetOrder::automatic;
-  // In 2D and 3D, find the convex hull's facets with no other point on their hyperplane
-  // beforehand (exactly: a monotone chain in 2D, Quickhull in 3D), and skip the searches of
-  // their outer sides, which hold no point (src/delaunay/known_hull.hpp). Pays on points in
-  // convex position (a circle, an ellipsoid, a convex scan), where a third to a half of the
-  // facets lie on the hull; kept only for large hulls.
-  bool known_hull_facets = true;
-};
-
-// Parses a variant name: "full", "scan", "kdtree" (no optimisation), "no-prune", "no-order",
-// "paper" (the paper's three steps and nothing else, FIFO order), "no-bottom-up", "no-seed",
-// "no-ball", "no-shell", "no-tie-memory", "no-slab", "no-hull", "fifo" (full with the paper's FIFO facet order in
-// every dimension), "spatial" (full with the spatial facet order in every dimension).
-// Throws UsageError naming the unknown value.
-SearchOptions search_variant(const std::string& name);
-// The names accepted by search_variant, for help texts.
-const char* search_variant_names();
+// The names Options::variant accepts, comma-separated, for help texts.
+const char* variant_names();
 
 // How often Options::progress is called: every kProgressInterval simplices found.
 inline constexpr std::size_t kProgressInterval = std::size_t{1} << 16;
 
 struct Options {
-  SearchOptions search;
+  // The name of an ablation variant, for measurements: "full" (the default, the whole
+  // algorithm) or one with a step of the search left out or a fixed facet order (the paper's
+  // own steps alone: "paper"; every name: variant_names()). Every variant gives the same
+  // simplices; the facet-order ones ("fifo", "spatial", and "scan", "kdtree" and "paper",
+  // which use the paper's FIFO order) change only their numbering and order. delaunay()
+  // throws UsageError, naming the value and the accepted names, for an unknown name.
+  std::string variant = "full";
   bool compute_neighbors = true;  // fill Triangulation::neighbors
   // Called from the computing thread every kProgressInterval simplices with the number of
   // simplices found so far, and once more when the triangulation is complete, with the final
@@ -90,9 +36,9 @@ struct Options {
   std::function<void(std::size_t simplices)> progress;
   // Threads to use: 0 means one per hardware thread (std::thread::hardware_concurrency), 1 the
   // serial run. The result, simplex numbers included, is the same for every count; so are the
-  // statistics, except the times, Statistics::wasted_searches and the search's work counters
-  // (search_calls, points_tested, candidates, exact_fallbacks: the seed candidates, shared by
-  // the threads, depend on the order in which the threads happen to search). With more than
+  // statistics, except the times and the search's work counters (Statistics::search_calls and
+  // the engine's counters in Statistics::debug: the seed candidates, shared by the threads,
+  // depend on the order in which the threads happen to search). With more than
   // one, the facets' searches run on helper threads, ahead of the calling thread, which records
   // the simplices in the serial order and is the only one that calls `progress`. A program that runs several
   // triangulations at once on its own threads should give each 1 (or its share of the cores):
@@ -112,23 +58,28 @@ struct Statistics {
   std::size_t simplices = 0;
   std::size_t hull_facets = 0;       // facets whose search found nothing: the convex hull
   std::size_t search_calls = 0;      // kd-tree nodes entered by all searches (the paper's "Calls" numerator)
-  std::size_t points_tested = 0;     // points inside a query box (or ball), tested against the candidate sphere
-  std::size_t candidates = 0;        // times a search's candidate point was set or improved
-  std::size_t exact_fallbacks = 0;   // decisions the floating-point filters could not take (made with GMP)
-  std::size_t max_open_facets = 0;   // the largest frontier held in the facet table
-  std::size_t shell_spheres = 0;     // spheres the points were found near (the search's sphere shell; 0: none)
   std::size_t threads = 1;           // threads used (Options::threads resolved)
-  std::size_t wasted_searches = 0;   // searches run ahead by a thread for a facet closed before its turn;
-                                     // not counted in search_calls, points_tested, candidates, exact_fallbacks
   double seconds_kdtree = 0;         // building the kd-tree (including sorting and deduplication)
   double seconds_first_facet = 0;    // gift wrapping to the first facet
   double seconds_search = 0;         // the main loop: searches, facet table, simplices and neighbours
   double seconds_total = 0;
   std::size_t peak_rss_bytes = 0;    // process peak resident memory at the end of the run
 
+  // The engine's internal counters, for measuring and debugging the search: what they count
+  // follows the implementation and changes with it.
+  struct Debug {
+    std::size_t points_tested = 0;    // points inside a query box (or ball), tested against the candidate sphere
+    std::size_t candidates = 0;       // times a search's candidate point was set or improved
+    std::size_t exact_fallbacks = 0;  // decisions the floating-point filters could not take (made with GMP)
+    std::size_t max_open_facets = 0;  // the largest frontier held in the facet table
+    std::size_t shell_spheres = 0;    // spheres the points were found near (the search's sphere shell; 0: none)
+    std::size_t wasted_searches = 0;  // searches run ahead by a thread for a facet closed before its turn; not
+                                      // counted in search_calls, points_tested, candidates, exact_fallbacks
+  } debug;
+
   // Search calls per simplex, the paper's "Calls" column of Table 1.
   double calls_per_simplex() const { return simplices ? double(search_calls) / double(simplices) : 0.0; }
-  // One line, "key=value" pairs, for logs and the CLI's --stats.
+  // One line, "key=value" pairs, for logs and the CLI's --stats (the debug counters included).
   std::string summary() const;
 };
 
@@ -151,10 +102,11 @@ struct Triangulation {
 // Computes the Delaunay triangulation of the points. Exact on every input: ties between
 // cospherical points are broken by a symbolic perturbation that depends only on the
 // coordinates, so any permutation of the input gives the same simplices.
-// Throws InputError (NaN/infinite coordinate, a dimension outside 2..11, 2^31 points or more) or DegenerateInputError
-// (fewer than d+1 distinct points, or all points in one hyperplane); UsageError for a negative
-// Options::threads; InternalError when one of the engine's own invariants fails (a bug, such as
-// more simplices than n points in E^d can have), rather than return a wrong triangulation.
+// Throws InputError (NaN/infinite coordinate, a dimension outside 2..11, 2^31 points or more)
+// or DegenerateInputError (fewer than d+1 distinct points, or all points in one hyperplane);
+// UsageError for a negative Options::threads or an unknown Options::variant; InternalError
+// when one of the engine's own invariants fails (a bug, such as more simplices than n points
+// in E^d can have), rather than return a wrong triangulation.
 Triangulation delaunay(PointsView points, const Options& options = {});
 
 }  // namespace drange

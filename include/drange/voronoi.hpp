@@ -86,8 +86,10 @@ struct ClippedCells {
 };
 
 struct VoronoiOptions {
-  Options delaunay;            // how the triangulation is computed; its threads also build the diagram
-  bool cell_volumes = true;    // fill Voronoi::volumes
+  // How the triangulation is computed; its `threads` also build the diagram (0: one per
+  // hardware thread; the diagram is the same for every count).
+  Options delaunay;
+  bool cell_volumes = true;  // fill Voronoi::volumes
 };
 
 // The Voronoi diagram of the points, computed from their Delaunay triangulation.
@@ -95,9 +97,10 @@ struct VoronoiOptions {
 Voronoi voronoi(PointsView points, const VoronoiOptions& options = {});
 
 // The same, from a triangulation already computed for these points by drange::delaunay
-// (its neighbours must be present). The work is shared among `threads` threads (0: one per
-// hardware thread, as Options::threads); the diagram is the same for every count.
-Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell_volumes = true, int threads = 0);
+// (its neighbours must be present). Of options.delaunay only `threads` is read.
+// Throws UsageError when the triangulation is for other points or has no neighbours, or for a
+// negative thread count.
+Voronoi voronoi(PointsView points, const Triangulation& triangulation, const VoronoiOptions& options = {});
 
 // Clips every cell of the diagram to the box (d = 2 or 3). Throws UsageError for another
 // dimension or a box that is empty, not finite, or of the wrong dimension.

@@ -21,11 +21,13 @@ class Delaunay(PointSetAttributes):
     threads : int, keyword only
         Threads for the search and for find_simplex; 0 (default) uses all cores.
     variant : str, keyword only
-        The search variant: "full" (default), or one of the paper's ablations
-        ("scan", "kdtree", "no-prune", "no-order", "paper", ...), for comparison;
-        "fifo" and "spatial" fix the order in which open facets are taken (the
-        paper's FIFO, or the spatial order that "full" uses in 3D to 5D). The set of
-        simplices is the same for every variant; their order is not.
+        An ablation variant of the search, for measurements: "full" (default, the whole
+        algorithm), or one with a step left out ("scan", "kdtree", "no-prune",
+        "no-order", "paper", ...; every name: drange._drange.variant_names). Every
+        variant gives the same simplices; "fifo" and "spatial" fix the order in which
+        open facets are taken (the paper's FIFO, or the spatial order that "full" uses
+        in 3D to 5D), and "scan", "kdtree" and "paper" use FIFO: these number and list
+        the simplices in another order. An unknown name raises ValueError.
     progress : callable, keyword only
         Called as progress(simplices_found) every 65536 simplices, and once at the end.
 
@@ -40,7 +42,12 @@ class Delaunay(PointSetAttributes):
         The exact duplicates, left out of the triangulation: point index, a simplex holding
         it, and the index of the point it copies.
     statistics : dict
-        The engine's counters and timings.
+        The run's figures: points, distinct_points, simplices, hull_facets,
+        search_calls, calls_per_simplex, threads, seconds_kdtree, seconds_first_facet,
+        seconds_search, seconds_total, peak_rss_bytes; and statistics["debug"], a dict
+        of the engine's internal counters (points_tested, candidates, exact_fallbacks,
+        max_open_facets, shell_spheres, wasted_searches), whose meaning follows the
+        implementation.
 
     The other attributes (convex_hull, vertex_neighbor_vertices, vertex_to_simplex,
     equations, transform) are computed on first use.

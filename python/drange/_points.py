@@ -25,7 +25,7 @@ def check_scipy_arguments(furthest_site, incremental, qhull_options):
 
 
 def check_options(variant, threads):
-    names = _drange.search_variant_names
+    names = _drange.variant_names
     if not isinstance(variant, str):
         raise TypeError(f"variant must be a string, one of {names}; got {type(variant).__name__}")
     if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)):

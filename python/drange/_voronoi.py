@@ -43,7 +43,7 @@ class Voronoi(PointSetAttributes):
     region_point : ndarray of int32, (nregions,)
         The point of each region.
     statistics : dict
-        The triangulation's counters and timings.
+        The triangulation's figures, as drange.Delaunay.statistics.
     """
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None, *,

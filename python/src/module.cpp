@@ -34,13 +34,22 @@ PointsView points_view(const Points& points, const char* what) {
 
 Options engine_options(const std::string& variant, int threads, PythonProgress& progress) {
   Options options;
-  options.search = search_variant(variant);
+  options.variant = variant;
   options.threads = threads;
   options.progress = progress.hook();
   return options;
 }
 
+// The user's figures at the top level; the engine's internal counters (Statistics::Debug)
+// in statistics["debug"].
 py::dict statistics_dict(const Statistics& s) {
+  py::dict debug;
+  debug["points_tested"] = s.debug.points_tested;
+  debug["candidates"] = s.debug.candidates;
+  debug["exact_fallbacks"] = s.debug.exact_fallbacks;
+  debug["max_open_facets"] = s.debug.max_open_facets;
+  debug["shell_spheres"] = s.debug.shell_spheres;
+  debug["wasted_searches"] = s.debug.wasted_searches;
   py::dict d;
   d["points"] = s.points;
   d["distinct_points"] = s.distinct_points;
@@ -48,18 +57,13 @@ py::dict statistics_dict(const Statistics& s) {
   d["hull_facets"] = s.hull_facets;
   d["search_calls"] = s.search_calls;
   d["calls_per_simplex"] = s.calls_per_simplex();
-  d["points_tested"] = s.points_tested;
-  d["candidates"] = s.candidates;
-  d["exact_fallbacks"] = s.exact_fallbacks;
-  d["max_open_facets"] = s.max_open_facets;
-  d["shell_spheres"] = s.shell_spheres;
   d["threads"] = s.threads;
-  d["wasted_searches"] = s.wasted_searches;
   d["seconds_kdtree"] = s.seconds_kdtree;
   d["seconds_first_facet"] = s.seconds_first_facet;
   d["seconds_search"] = s.seconds_search;
   d["seconds_total"] = s.seconds_total;
   d["peak_rss_bytes"] = s.peak_rss_bytes;
+  d["debug"] = debug;
   return d;
 }
 
@@ -216,12 +220,14 @@ PYBIND11_MODULE(_drange, m) {
   m.def("voronoi", [](Points points, const std::string& variant, int threads, bool cell_volumes, py::object progress) {
     const PointsView input = points_view(points, "points");
     PythonProgress reporter(std::move(progress));
-    const Options options = engine_options(variant, threads, reporter);
+    VoronoiOptions options;
+    options.delaunay = engine_options(variant, threads, reporter);
+    options.cell_volumes = cell_volumes;
     auto diagram = std::make_unique<Diagram>();
     diagram->result = reporter.run([&] {
-      const Triangulation triangulation = delaunay(input, options);
+      const Triangulation triangulation = delaunay(input, options.delaunay);
       diagram->statistics = triangulation.stats;
-      return voronoi(input, triangulation, cell_volumes, threads);
+      return voronoi(input, triangulation, options);
     });
     diagram->points = std::move(points);
     return diagram;
@@ -254,7 +260,7 @@ PYBIND11_MODULE(_drange, m) {
     return d;
   }, py::arg("points"), py::arg("simplices"), py::arg("max_problems"));
 
-  m.attr("search_variant_names") = search_variant_names();
+  m.attr("variant_names") = variant_names();
 }
 
 }  // namespace drange::python

@@ -132,6 +132,8 @@ def test_attributes(pair):
     assert all(k in ours.simplices[v2s[k]] for k in range(n))
     stats = ours.statistics
     assert stats["simplices"] == ours.nsimplex and stats["points"] == n
+    # The engine's internal counters are apart, in stats["debug"].
+    assert stats["debug"]["points_tested"] > 0 and "points_tested" not in stats
     assert ours.lift_points(points[:2]).shape == (2, d + 1)
     assert repr(ours).startswith("<drange.Delaunay")
 

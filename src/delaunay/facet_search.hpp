@@ -22,8 +22,8 @@
 #include <memory>
 
 #include "delaunay/point_store.hpp"
+#include "delaunay/search_options.hpp"
 #include "delaunay/seed_memory.hpp"
-#include "drange/delaunay.hpp"
 
 namespace drange::engine {
 

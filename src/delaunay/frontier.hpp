@@ -108,7 +108,7 @@ class Frontier {
   }
   // A facet's turn, in queue order: false when it was closed while it waited (it needs no
   // search); otherwise it leaves the table, and close() must follow with its search's result.
-  // Statistics::max_open_facets counts the open facets as each turn begins.
+  // Statistics::Debug::max_open_facets counts the open facets as each turn begins.
   bool take(const std::int32_t* ids, const FacetInfo& info, bool closed) {
     count_open_facets(0);
     return take_uncounted(ids, info, closed);
@@ -122,7 +122,7 @@ class Frontier {
     return false;  // closed while it waited
   }
   void count_open_facets(std::size_t taken) {
-    stats_.max_open_facets = std::max(stats_.max_open_facets, table_.size() + taken);
+    stats_.debug.max_open_facets = std::max(stats_.debug.max_open_facets, table_.size() + taken);
   }
   // Threads > 1: mark the facets that close while they wait (in the queue, or in
   // closed_after_pop() once they left it). Queues whose marks are cheap (FacetQueue) are marked

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "delaunay/point_store.hpp"
+#include "delaunay/search_options.hpp"
 #include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
 

@@ -2,10 +2,10 @@
 //
 // No pool outlives the call and nothing is global: a Team only remembers how many threads it
 // may use and how many exact predicate evaluations its helper threads made (the predicates
-// count them per thread, geometry/predicates.cpp, and Statistics::exact_fallbacks must cover
-// every thread). Each parallel phase starts its helpers and joins them before returning;
-// starting a thread costs tens of microseconds, which no phase worth running in parallel
-// notices.
+// count them per thread, geometry/predicates.cpp, and Statistics::Debug::exact_fallbacks must
+// cover every thread). Each parallel phase starts its helpers and joins them before
+// returning; starting a thread costs tens of microseconds, which no phase worth running in
+// parallel notices.
 //
 // Exceptions: the first exception thrown by any thread (the calling thread included) is the one
 // the caller receives, after every helper has been joined. A phase whose threads wait for each

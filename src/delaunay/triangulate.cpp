@@ -32,6 +32,7 @@
 #include "delaunay/prepare_points.hpp"
 #include "delaunay/search_pipeline.hpp"
 #include "delaunay/team.hpp"
+#include "delaunay/triangulate.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
 #include "geometry/predicates.hpp"
@@ -43,9 +44,11 @@ namespace {
 using engine::derive_other_facets;
 using engine::derived_block_size;
 using engine::FacetInfo;
+using engine::FacetOrder;
 using engine::FacetQueue;
 using engine::Frontier;
 using engine::Lookahead;
+using engine::SearchOptions;
 using engine::SearchPipeline;
 using engine::SearchTotals;
 using Clock = std::chrono::steady_clock;
@@ -194,7 +197,7 @@ void search(Frontier<Queue>& frontier, const engine::FirstFacet& first, const en
 
 }  // namespace
 
-Triangulation delaunay(PointsView input, const Options& options) {
+Triangulation engine::triangulate(PointsView input, const Options& options, const SearchOptions& search_options) {
   const auto start = Clock::now();
   const std::uint64_t exact_before = geometry::exact_evaluations();
   Triangulation result;
@@ -212,12 +215,12 @@ Triangulation delaunay(PointsView input, const Options& options) {
   struct alignas(64) SharedPoints {
     engine::PointStore store;
   };
-  const auto shared_points = std::make_unique<const SharedPoints>(SharedPoints{engine::prepare_points(input, engine::search_leaf_size(input.dim), result.duplicates, team, options.search)});
+  const auto shared_points = std::make_unique<const SharedPoints>(SharedPoints{engine::prepare_points(input, engine::search_leaf_size(input.dim), result.duplicates, team, search_options)});
   const engine::PointStore& points = shared_points->store;
   const int d = points.dim;
   const int width = d + 1;
   stats.distinct_points = static_cast<std::size_t>(points.size);
-  stats.shell_spheres = static_cast<std::size_t>(points.shell.spheres());
+  stats.debug.shell_spheres = static_cast<std::size_t>(points.shell.spheres());
   stats.seconds_kdtree = seconds_since(start);
 
   auto phase = Clock::now();
@@ -229,14 +232,14 @@ Triangulation delaunay(PointsView input, const Options& options) {
   phase = Clock::now();
   std::vector<std::int32_t>& simplices = result.simplices;
   SearchTotals totals;
-  if (spatial_order(options.search.facet_order, d)) {
+  if (spatial_order(search_options.facet_order, d)) {
     Frontier<engine::SpatialFacetQueue> frontier(d, points.size, result, options.progress,
                                                  engine::SpatialFacetQueue(d, points.size, kSpatialBlockShift),
                                                  options.compute_neighbors);
-    search(frontier, first, points, options.search, team, kSpatialLookahead, totals);
+    search(frontier, first, points, search_options, team, kSpatialLookahead, totals);
   } else {
     Frontier<FacetQueue> frontier(d, points.size, result, options.progress, FacetQueue(d), options.compute_neighbors);
-    search(frontier, first, points, options.search, team, Lookahead{0, 0}, totals);
+    search(frontier, first, points, search_options, team, Lookahead{0, 0}, totals);
   }
   stats.seconds_search = seconds_since(phase);
 
@@ -247,14 +250,18 @@ Triangulation delaunay(PointsView input, const Options& options) {
   });
   stats.simplices = simplices.size() / static_cast<std::size_t>(width);
   stats.search_calls = totals.counters.calls;
-  stats.points_tested = totals.counters.points_tested;
-  stats.candidates = totals.counters.candidates;
-  stats.exact_fallbacks = exact_setup + totals.exact;
-  stats.wasted_searches = totals.wasted;
+  stats.debug.points_tested = totals.counters.points_tested;
+  stats.debug.candidates = totals.counters.candidates;
+  stats.debug.exact_fallbacks = exact_setup + totals.exact;
+  stats.debug.wasted_searches = totals.wasted;
   stats.seconds_total = seconds_since(start);
   stats.peak_rss_bytes = peak_rss_bytes();
   if (options.progress) options.progress(stats.simplices);
   return result;
+}
+
+Triangulation delaunay(PointsView input, const Options& options) {
+  return engine::triangulate(input, options, engine::search_variant(options.variant));
 }
 
 }  // namespace drange

@@ -14,7 +14,7 @@
 
 namespace drange {
 
-Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell_volumes, int threads) {
+Voronoi voronoi(PointsView points, const Triangulation& triangulation, const VoronoiOptions& options) {
   const Triangulation& t = triangulation;
   if (t.dim != points.dim || t.num_points != points.n)
     throw UsageError("voronoi: the triangulation was computed for other points (dimension " + std::to_string(t.dim) +
@@ -23,6 +23,7 @@ Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell
   if (t.neighbors.size() != t.simplices.size())
     throw UsageError("voronoi: the triangulation has no neighbours (compute it with Options::compute_neighbors)");
 
+  const int threads = options.delaunay.threads;
   if (threads < 0) throw UsageError("voronoi: threads must be 0 (all hardware threads) or a positive count, got " + std::to_string(threads));
   engine::Team team(engine::resolve_threads(threads));
 
@@ -36,7 +37,7 @@ Voronoi voronoi(PointsView points, const Triangulation& triangulation, bool cell
   diagram::build_regions(t, classes, incidence, on_hull, out, team);
   out.simplex_vertex = std::move(classes.of_simplex);
   out.vertices = std::move(classes.vertices);
-  if (cell_volumes) diagram::compute_cell_volumes(points, t, on_hull, out, team);  // uses the vertices in 2D/3D
+  if (options.cell_volumes) diagram::compute_cell_volumes(points, t, on_hull, out, team);  // uses the vertices in 2D/3D
   return out;
 }
 
@@ -44,7 +45,7 @@ Voronoi voronoi(PointsView points, const VoronoiOptions& options) {
   Options delaunay_options = options.delaunay;
   delaunay_options.compute_neighbors = true;
   const Triangulation triangulation = delaunay(points, delaunay_options);
-  return voronoi(points, triangulation, options.cell_volumes, options.delaunay.threads);
+  return voronoi(points, triangulation, options);
 }
 
 }  // namespace drange

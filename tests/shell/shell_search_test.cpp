@@ -24,7 +24,7 @@ std::vector<drange::test::Simplex> canonical(const drange::Triangulation& t) { r
 
 drange::Triangulation triangulate(const PointCloud& points, const char* variant) {
   drange::Options options;
-  options.search = drange::search_variant(variant);
+  options.variant = variant;
   options.threads = 1;
   return drange::delaunay(points, options);
 }
@@ -119,19 +119,19 @@ TEST(SphereShell, CutsTheWorkOnSpheres) {
   for (int d : {2, 3}) {
     const PointCloud points = sphere(d == 2 ? 8000 : 2000, d, 31);
     const drange::Statistics with = triangulate(points, "full").stats, without = triangulate(points, "no-shell").stats;
-    EXPECT_LT(with.points_tested * (d == 2 ? 20 : 5), without.points_tested) << "d=" << d;
+    EXPECT_LT(with.debug.points_tested * (d == 2 ? 20 : 5), without.debug.points_tested) << "d=" << d;
     if (d == 2) EXPECT_LT(with.search_calls * 4, without.search_calls);
     // Within rounding of one sphere but not exactly on it: GMP is all but never needed, with
     // the shell or without.
-    EXPECT_LT(with.exact_fallbacks * 1000, with.points_tested) << "d=" << d;
-    EXPECT_LT(without.exact_fallbacks * 1000, without.points_tested) << "d=" << d;
+    EXPECT_LT(with.debug.exact_fallbacks * 1000, with.debug.points_tested) << "d=" << d;
+    EXPECT_LT(without.debug.exact_fallbacks * 1000, without.debug.points_tested) << "d=" << d;
   }
   // Two concentric spheres: the inner one's ball is a cell of cospherical points, as above
   // (points tested with the shell and without: 2D 0.28M and 5.97M, 3D 0.20M and 2.91M).
   for (int d : {2, 3}) {
     const PointCloud points = concentric(d == 2 ? 4000 : 1000, d, 42, {1.0, 0.5});
     const drange::Statistics with = triangulate(points, "full").stats, without = triangulate(points, "no-shell").stats;
-    EXPECT_LT(with.points_tested * 3, without.points_tested) << "d=" << d;
+    EXPECT_LT(with.debug.points_tested * 3, without.debug.points_tested) << "d=" << d;
   }
   // Bubbles: each bubble's ball is a cell of cospherical points; with a sphere per bubble, as
   // with one sphere (points tested with the shell and without: 2D 0.19M and 1.41M, 3D 0.44M
@@ -139,7 +139,7 @@ TEST(SphereShell, CutsTheWorkOnSpheres) {
   for (int d : {2, 3}) {
     const PointCloud points = bubbles(10, 400, d, 90);
     const drange::Statistics with = triangulate(points, "full").stats, without = triangulate(points, "no-shell").stats;
-    EXPECT_LT(with.points_tested * 3, without.points_tested) << "d=" << d;
+    EXPECT_LT(with.debug.points_tested * 3, without.debug.points_tested) << "d=" << d;
   }
 }
 
