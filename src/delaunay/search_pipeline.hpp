@@ -69,7 +69,7 @@ struct SearchTotals {
 // the serial loop's too: 1024 facets, topped up by batches of 256, for every thread count.
 //
 // A facet searched ahead can turn out to be closed at its turn (the serial loop would not have
-// searched it): a wasted search, counted in Statistics::wasted_searches. Three things keep
+// searched it): a wasted search, counted in Statistics::Debug::wasted_searches. Three things keep
 // these few: facets closed before they enter the window carry the queue's mark; facets
 // closed in the window get a flag that a thread reads before searching; and each thread
 // predicts the closures that its own recent simplices imply (ClosurePredictor). What remains

@@ -7,8 +7,8 @@
 //      when already open, and closing a facet links the two simplices as neighbours (2.5).
 // The queue (facet_queue.hpp) is the paper's FIFO or, by default in 3D to 5D, the spatial order
 // (SearchOptions::facet_order): least smallest vertex id first, the ids following the kd-tree,
-// so that the frontier sweeps through space (3D, 1M uniform points: 35 000 open facets at most
-// instead of 151 000, the search 27% faster on 1 thread, 17% on 2). Under the spatial order
+// so that the frontier sweeps through space and stays several times smaller than FIFO's
+// growing ball, which keeps the facet table in cache (docs/algorithm.md). Under the spatial order
 // the facets leave the queue in batches into a fixed window ahead of their turns (Lookahead),
 // the same for every thread count; the order of the turns, and so the output, depends on that
 // window and on nothing else. With Options::threads > 1, step 3 runs ahead on helper threads
@@ -60,20 +60,18 @@ std::size_t peak_rss_bytes() {
   return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
 
-// The spatial order's parameters, chosen from measurements (README.md, "The order of the open
-// facets"). Keys are the smallest vertex id >> 3, blocks of 8 points: on uniform and gaussian
-// points in 3D, blocks of 1 to 512 points did not differ beyond the noise; on the 60^3 grid,
-// 64 and 512 were slower (by 10%); 8 keeps the bucket array at one int per point. The window
-// is the FIFO pipeline's for 2 threads; batches of 2 runs (256) halved the wasted searches of
-// batches of 1 run (3D, 1M points, 2 threads: 42 000 to 48 000 instead of 100 000), and
-// batches of single facets cost the calling thread a window update per turn.
+// The spatial order's parameters, chosen from measurements (docs/performance.md). Keys are the
+// smallest vertex id >> 3, blocks of 8 points: smaller blocks gained nothing on uniform points,
+// larger ones lost on grids, and 8 keeps the bucket array at one int per point. The window is
+// the FIFO pipeline's for 2 threads; batches of 2 runs (256) waste about half the searches of
+// batches of 1 run on 2 threads, and batches of single facets would cost the calling thread a
+// window update per turn.
 constexpr int kSpatialBlockShift = 3;
 constexpr Lookahead kSpatialLookahead{1024, 256};
 
 // Whether the facets take their turns in the spatial order in dimension d. `automatic`: where
-// it won (search time, 1 thread: 3D 1M uniform -27%, 4D 100k -16%, 5D 5000 -5%); not in 2D
-// (1M uniform: -3% on 1 thread, +1% on 2, within the noise) nor from 6D on (6D 1000: +1%,
-// 7D 1000: +11%).
+// it is faster, 3D to 5D; not in 2D, where FIFO's frontier is small already (the two are level),
+// nor from 6D on, where the frontier is a large part of the triangulation whatever the order.
 bool spatial_order(FacetOrder order, int d) {
   if (order == FacetOrder::automatic) return d >= 3 && d <= 5;
   return order == FacetOrder::spatial;
@@ -114,7 +112,9 @@ bool is_derived(const std::int32_t* facet, std::uint32_t hash, const std::int32_
 
 // One thread, spatial order: the same, but the facets leave the queue ahead of their turn,
 // into a ring, by the pipeline's rule (Lookahead), on which the order depends. (The loop
-// above is this one with a lookahead of 1, without the ring: 2.5% faster in 3D.) Each turn's
+// above is this one with a lookahead of 1, without the ring and its bookkeeping; FIFO's queue
+// marks the facets closed while they wait, which a ring of facets out of the queue would not
+// see.) Each turn's
 // simplex is recorded one turn late: the next facet's turn (its table lookup and search) runs
 // first, while the table slots that the recording reads (prefetched when the simplex's facets
 // were derived) arrive from memory. The two touch different facets of the table, except when
@@ -211,7 +211,7 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
 
   // Every search thread reads the store's fields for every node and point it visits: they get
   // cache lines of their own, away from the locals below that the calling thread keeps writing
-  // (a precaution against false sharing; no difference was measurable on 2 cores).
+  // (a precaution against false sharing).
   struct alignas(64) SharedPoints {
     engine::PointStore store;
   };
@@ -243,7 +243,7 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
   }
   stats.seconds_search = seconds_since(phase);
 
-  // Back to the caller's numbering (2D 1M: 6M lookups, about 5 ms on one thread).
+  // Back to the caller's numbering: one lookup per vertex of every simplex, on the threads.
   util::for_ranges(simplices.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
       simplices[i] = points.input_index[static_cast<std::size_t>(simplices[i])];
