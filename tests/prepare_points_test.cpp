@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "delaunay/prepare_points.hpp"
+#include "delaunay/search_options.hpp"
 #include "delaunay/team.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/generate.hpp"
@@ -115,6 +116,30 @@ TEST(PreparePoints, RanksAndDuplicatesInFourDimensions) {
 
 TEST(PreparePoints, RanksAndDuplicatesInFiveDimensions) {
   expect_store_matches_reference(points_with_copies(5, 30000, 3), "5D");
+}
+
+// The search's accelerators are built only when the options use them: on a sphere (3D: the
+// shell, the hull's facets; node slabs on its patches) each is there with the full search and
+// absent with its switch off, the others unchanged.
+TEST(PreparePoints, BuildsOnlyTheAcceleratorsTheOptionsUse) {
+  const PointCloud points = drange::generate_points(drange::Distribution::Sphere, 4000, 3, 5);
+  const auto store_for = [&](const char* variant) {
+    drange::engine::Team team(1);
+    std::vector<Duplicate> duplicates;
+    return drange::engine::prepare_points(points, 64, duplicates, team, drange::engine::search_variant(variant));
+  };
+  const drange::engine::PointStore full = store_for("full");
+  ASSERT_TRUE(full.shell.active());
+  ASSERT_GT(full.slabs.size(), 0u);
+  ASSERT_TRUE(full.hull.active());
+  const drange::engine::PointStore no_shell = store_for("no-shell"), no_slab = store_for("no-slab"), no_hull = store_for("no-hull");
+  EXPECT_FALSE(no_shell.shell.active());
+  EXPECT_GT(no_shell.slabs.size(), 0u);
+  EXPECT_EQ(no_slab.slabs.size(), 0u);
+  EXPECT_TRUE(no_slab.shell.active());
+  EXPECT_FALSE(no_hull.hull.active());
+  EXPECT_TRUE(no_hull.shell.active());
+  EXPECT_FALSE(store_for("scan").shell.active());  // the shell prunes kd-tree nodes: no tree, no shell
 }
 
 }  // namespace
