@@ -17,9 +17,19 @@ std::vector<std::int32_t> seeds_of(const SeedMemory& memory, std::int32_t id) {
   return seeds;
 }
 
-TEST(SeedMemory, KeepsOneSeedIn2DAndTwoFrom3DOn) {
-  EXPECT_EQ(SeedMemory(4, 2).seeds_per_point(), 1);
-  for (int d = 3; d <= 8; ++d) EXPECT_EQ(SeedMemory(4, d).seeds_per_point(), 2) << "d = " << d;
+// However many seeds a dimension keeps (a tuning choice), a point's seeds are its most recent
+// distinct apexes, newest first, and the search kernel compiled for d reads that many.
+TEST(SeedMemory, KeepsItsCountOfMostRecentApexesInEveryDimension) {
+  for (int d = 2; d <= 8; ++d) {
+    SeedMemory memory(4, d);
+    const int k = memory.seeds_per_point();
+    ASSERT_EQ(k, SeedMemory::per_point_in(d)) << "d = " << d;
+    ASSERT_GE(k, 1) << "d = " << d;
+    for (std::int32_t apex = 10; apex < 10 + k + 2; ++apex) memory.remember(2, apex);
+    std::vector<std::int32_t> newest;
+    for (int i = 0; i < k; ++i) newest.push_back(10 + k + 1 - i);
+    EXPECT_EQ(seeds_of(memory, 2), newest) << "d = " << d;
+  }
 }
 
 TEST(SeedMemory, StartsWithoutSeeds) {
