@@ -71,8 +71,8 @@ std::vector<Result> scan_in_chunks(const Ids& ids, Team& team, Scan scan) {
 // The orientation of k - 1 fixed points and a varying point x in a frame of k axes,
 // det[pi(p_1 - base); ...; pi(p_{k-1} - base); pi(x - base)], as the linear function of x it is:
 // its cofactors along the last row are computed once (with their absolute trees), then each x
-// costs k products and the certified sign of their sum, as the search's on_open_side does
-// (facet_search.cpp); the scans ask the exact predicate only when that filter cannot decide.
+// costs k products and the certified sign of their sum, as the search's open-side filter does
+// (geometry/facet_plane_test.hpp); the scans ask the exact predicate only when that filter cannot decide.
 // The value is the Laplace expansion of the whole determinant along its last row, so the
 // determinant's error bound applies.
 class LinearOrientation {

@@ -1,5 +1,5 @@
 // delaunay/leaf_blocks.hpp: the points of every kd-tree leaf copied in blocks of 8, coordinates
-// and bounding boxes transposed, so that the search (facet_search.cpp) tests eight block boxes,
+// and bounding boxes transposed, so that the search (search/search_kernel.hpp) tests eight block boxes,
 // then the eight points of a block, at once with vector instructions. The layout only: the
 // arithmetic on the lanes belongs to the search's kernel, which owns the ball.
 #pragma once
@@ -27,7 +27,7 @@ class Team;
 // doubles (vector instructions) that give bit masks. A copy of the coordinates, O(n d)
 // doubles, built once (prepare_points) and shared by every search thread.
 //
-// In every dimension, because the lane tests give masks (facet_search.cpp, scan_blocks): with a
+// In every dimension, because the lane tests give masks (search/search_kernel.hpp, scan_blocks): with a
 // branch per lane, the blocks lose in 2D and 3D, where the balls are small against a leaf.
 class LeafBlocks {
  public:

@@ -35,7 +35,7 @@ struct PointStore {
   bool scaled = false;
   // When every coordinate is an integer multiple of 2^unit_exponent and the extent is small in
   // those units (a dyadic grid, e.g. integer coordinates), differences of coordinates are
-  // exact, and the search can prove some evaluations exact (facet_search.cpp).
+  // exact, and the search can prove some evaluations exact (geometry/static_exactness.hpp).
   bool dyadic = false;
   int unit_exponent = 0;
   // For points near spheres: their centres g, each point's offset |x - g|^2 - rho from its

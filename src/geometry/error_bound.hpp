@@ -31,7 +31,7 @@ constexpr double kUnitRoundoff = 0x1p-53;
 constexpr double kFilterUnderflow = 0x1p-800;
 // A bound on the absolute error that underflow adds to any value the search computes from
 // points scaled below 1 in magnitude (PointStore::scaled; d <= 11): the minors of the facet's
-// lifted rows, the candidate's w and I(p, x) (delaunay/facet_search.cpp). The entries of the
+// lifted rows, the candidate's w and I(p, x) (lifted_sphere_test.hpp, facet_plane_test.hpp). The entries of the
 // lifted rows are below 2^6, so the (d-1)-minors are below 10! 2^60 < 2^82, w below 2^92 and
 // I below 2^102; an underflowing product is multiplied afterwards by at most 2^94 (the
 // cofactor of the deepest lift entry's square), and the expanded expression of I has fewer
@@ -76,7 +76,7 @@ inline int certified_sign(double value, double abs_tree, int roundings) {
 // On x86-64 the arithmetic is SSE2, whose flags live in MXCSR: reading it directly costs less
 // than glibc's fenv functions, which also save and restore the x87 state, but a read still
 // waits for the arithmetic before it; the facet search, which would read it several times per
-// facet, does without (kUnderflowError; facet_search.cpp, filters_hold_). The empty asm
+// facet, does without (kUnderflowError; search/search_kernel.hpp, filters_hold_). The empty asm
 // statements keep the compiler from moving memory accesses (the watched results) across.
 #if defined(__x86_64__) && defined(__SSE2__)
 class FloatingPointWatch {

@@ -16,7 +16,7 @@
 namespace drange::geometry {
 
 // orientation in two parts, for a caller that can learn a zero from elsewhere before it pays
-// for the exact stages (delaunay/known_ties.hpp): the floating-point filters and the exactness
+// for the exact stages (known_ties.hpp): the floating-point filters and the exactness
 // proofs (nullopt when they cannot decide), then the exact stages alone (double-double, then
 // integers: fixed-width or GMP).
 std::optional<int> filtered_orientation(const Frame& frame, const double* const* points);

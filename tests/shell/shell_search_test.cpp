@@ -35,7 +35,7 @@ TEST(SphereShell, SameValidTriangulationWithAndWithoutIt) {
       {"sphere 3D", sphere(1500, 3, 22)},
       {"sphere 4D", sphere(300, 4, 23)},
       // 4D and 5D: the leaf scan's blocks of 32, whose point test bounds its error once per
-      // block (facet_search.cpp, block_terms), and the 5D floating-point form.
+      // block (search/shell_pruner.hpp, block_terms), and the 5D floating-point form.
       {"noisy sphere 4D", sphere(600, 4, 29, 1.0, 0.0, 1e-9)},
       {"sphere 5D", sphere(120, 5, 30)},
       {"off-centre sphere 3D", sphere(1500, 3, 24, 0.75, 3.0)},

@@ -7,7 +7,7 @@
 // its tests there would mostly go to GMP. About g and rho, and from the points' offsets
 // (SphereShell::offset), the form's terms are small: the points' tests resolve their sign to
 // within rounding of those small terms, GMP is left with the true ties, and the bounds are
-// tight enough for the search to prune whole nodes with them (facet_search.cpp, shell_prunes).
+// tight enough for the search to prune whole nodes with them (search/shell_pruner.hpp, node_prunes).
 // The form is computed once per candidate; from 4D, its minors of the facet's rows once per
 // facet (FacetMinors).
 #pragma once

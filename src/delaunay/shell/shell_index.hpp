@@ -7,11 +7,11 @@
 // Why each piece: the search's test, sigma I(p, x), is linear in (x, |x - g|^2) for any fixed
 // g, so its least value over a node's box crossed with the node's range of offsets (as thin as
 // the points' distance from the sphere) proves, for many nodes, that none of their points
-// beats the candidate (facet_search.cpp, shell_prunes). A box bounds the linear part loosely
+// beats the candidate (search/shell_pruner.hpp, node_prunes). A box bounds the linear part loosely
 // (the box of an arc reaches across the candidate's sphere), so each node also has a cone from
 // g, which bounds it over the points' cap; and each leaf lists its points by offset, in blocks
 // with cones of their own, so that a scan stops where the offsets prove the rest outside
-// (facet_search.cpp, scan_shell_leaf). With spheres about several centres, each sphere has a
+// (search/shell_pruner.hpp, scan_blocks). With spheres about several centres, each sphere has a
 // shell of its own: each point near it is in it, its offset taken about it, and so are the
 // ranges and cones of the nodes whose points are all in it. The search's proofs rest on these
 // bounds, so each holds the exact values: the offsets carry a proven error bound (eta), and
@@ -49,9 +49,9 @@ struct SphereShell {
   // <= r_hi. cos_lo is -2 where no such cone is narrower than a half-space (or a point is at
   // g), and for a node in no sphere, unless the shell has one sphere: then every node has a
   // cone about its centre, over its points off the sphere too (the closed side's proof uses
-  // those: facet_search.cpp, cone_on_closed_side). On a sphere the node's points lie on an
+  // those: search/shell_pruner.hpp, on_closed_side). On a sphere the node's points lie on an
   // arc or a cap, which its box bounds loosely: the cone bounds the form's linear term over
-  // them tightly (facet_search.cpp, cone_linear_low).
+  // them tightly (search/shell_pruner.hpp, cone_linear_low).
   std::vector<double> cone;
   // Each leaf cut into runs of points in one sphere (or in none), and each run into blocks the
   // way the build orders its points (halving down to 8 points in 3D, 32 from 4D, the whole
@@ -60,7 +60,7 @@ struct SphereShell {
   // first_block[leaf] (-1 for inner nodes and leaves in no sphere); each block's cone (as
   // `cone`), and its point ids by increasing offset (block_ids over the block's positions)
   // with those offsets. The leaf scan tests, block by block, only the points whose offset can
-  // still beat the candidate (facet_search.cpp, scan_shell_leaf).
+  // still beat the candidate (search/shell_pruner.hpp, scan_blocks).
   std::vector<std::int32_t> block_start, first_block, block_sphere;
   std::vector<double> block_cone;
   std::vector<std::int32_t> block_ids;
@@ -70,7 +70,7 @@ struct SphereShell {
   // its |y| (stride 8: s_lo, s_hi, r_lo, r_hi for each; an empty cluster has s_lo > s_hi). A
   // node that holds points of two spheres has a range of offsets and of radii over both, which
   // prunes nothing in the search of the cell inside the smallest; per cluster they are as thin
-  // as a node's on one sphere (facet_search.cpp, shell_prunes). Empty for one sphere and for
+  // as a node's on one sphere (search/shell_pruner.hpp, node_prunes). Empty for one sphere and for
   // spheres about several centres.
   double cluster_split = 0.0;
   std::vector<double> clusters;
