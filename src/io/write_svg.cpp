@@ -455,7 +455,7 @@ void write_legend(std::ostream& out, const View& view, const SvgOptions& options
   const double y = view.height() + kLegendPx / 2;
   double x = 12;
   out << "<g id=\"legend\" class=\"legend\" font-family=\"sans-serif\" font-size=\"12\" fill=\"#222\">";
-  // `sample`: "h0" for a dot (with round caps), "h24" for a line.
+  // `sample`: "h0" for a dot (its caps are round), "h24" for a line.
   const auto item = [&](const char* sample, const std::string& stroke, const std::string& text) {
     out << "<path d=\"M" << px(x) << ' ' << px(y) << sample << "\" fill=\"none\" stroke-linecap=\"round\" " << stroke << "/>";
     x += sample[1] == '0' ? 10 : 30;
