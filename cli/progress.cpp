@@ -20,7 +20,7 @@ namespace {
 //   d = 2..6 at N = 20 000:  39 967, 133 748, 600 030, 3 222 486, 19 408 083 simplices
 //                            (2.00, 6.69, 30.0, 161.1, 970.4 per point)
 //   d = 7 at N = 1 000:      3 156 538 (a run of 20 000 would take hours)
-// 3D uses 6.75, measured at N = 10^6 (README; the Poisson limit is 6.77). Points near the
+// 3D uses 6.75, measured at N = 10^6 (docs/performance.md; the Poisson limit is 6.77). Points near the
 // cube's boundary have fewer simplices, so the ratio still grows with N, the more so the
 // higher d: these are estimates, and the fraction shown is capped at 99% until the end.
 // Beyond d = 7 nothing was measured: the ratio is extrapolated by a factor of d - 1 per

@@ -1,5 +1,5 @@
 // tests/node_slabs_test.cpp: the kd-tree nodes' slabs (delaunay/node_slabs.cpp) and the search
-// that prunes with them (facet_search.cpp, SearchOptions::node_slabs).
+// that prunes with them (search/slab_pruner.hpp, SearchOptions::node_slabs).
 //
 // A slab must hold every point of its node for exact arithmetic (checked in long double, whose
 // 11 extra bits see far below the slab's rounding margin), be thin (kept only when 4 times

@@ -36,9 +36,10 @@ struct Options {
   std::function<void(std::size_t simplices)> progress;
   // Threads to use: 0 means one per hardware thread (std::thread::hardware_concurrency), 1 the
   // serial run. The result, simplex numbers included, is the same for every count; so are the
-  // statistics, except the times and the search's work counters (Statistics::search_calls and
-  // the engine's counters in Statistics::debug: the seed candidates, shared by the threads,
-  // depend on the order in which the threads happen to search). With more than
+  // statistics, except the times and the search's work counters (Statistics::search_calls, and
+  // points_tested, candidates, exact_fallbacks and wasted_searches in Statistics::debug: the
+  // seed candidates, shared by the threads, depend on the order in which the threads happen to
+  // search). With more than
   // one, the facets' searches run on helper threads, ahead of the calling thread, which records
   // the simplices in the serial order and is the only one that calls `progress`. A program that runs several
   // triangulations at once on its own threads should give each 1 (or its share of the cores):
@@ -57,7 +58,9 @@ struct Statistics {
   std::size_t distinct_points = 0;  // points after removing exact duplicates
   std::size_t simplices = 0;
   std::size_t hull_facets = 0;       // facets whose search found nothing: the convex hull
-  std::size_t search_calls = 0;      // kd-tree nodes entered by all searches (the paper's "Calls" numerator)
+  // kd-tree nodes entered by all searches: the paper's "Calls" numerator, kept here for that
+  // reason although, like the debug counters, it depends on the variant and the threads.
+  std::size_t search_calls = 0;
   std::size_t threads = 1;           // threads used (Options::threads resolved)
   double seconds_kdtree = 0;         // building the kd-tree (including sorting and deduplication)
   double seconds_first_facet = 0;    // gift wrapping to the first facet
@@ -70,9 +73,10 @@ struct Statistics {
   struct Debug {
     std::size_t points_tested = 0;    // points inside a query box (or ball), tested against the candidate sphere
     std::size_t candidates = 0;       // times a search's candidate point was set or improved
-    std::size_t exact_fallbacks = 0;  // decisions the floating-point filters could not take (made with GMP)
+    std::size_t exact_fallbacks = 0;  // decisions left to the integer stage (fixed-width or GMP), set-up included
     std::size_t max_open_facets = 0;  // the largest frontier held in the facet table
-    std::size_t shell_spheres = 0;    // spheres the points were found near (the search's sphere shell; 0: none)
+    std::size_t shell_spheres = 0;    // spheres the points were found near (the sphere shell; 0: none, or a
+                                      // variant without the shell, which is then not fitted)
     std::size_t wasted_searches = 0;  // searches run ahead by a thread for a facet closed before its turn; not
                                       // counted in search_calls, points_tested, candidates, exact_fallbacks
   } debug;

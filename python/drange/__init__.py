@@ -8,10 +8,10 @@ line::
 Every decision is exact (no joggling, no tolerance): integer grids, cospherical points and
 duplicates give one well-defined triangulation, the same for any input order.
 """
-from ._drange import DegenerateInputError, Error
+from ._drange import DegenerateInputError, Error, variant_names
 from ._delaunay import Delaunay
 from ._voronoi import ClippedCells, Voronoi
 from ._check import check_triangulation
 
-__all__ = ["Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error", "DegenerateInputError"]
+__all__ = ["Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error", "DegenerateInputError", "variant_names"]
 __version__ = "0.1.0"

@@ -23,7 +23,7 @@ class Delaunay(PointSetAttributes):
     variant : str, keyword only
         An ablation variant of the search, for measurements: "full" (default, the whole
         algorithm), or one with a step left out ("scan", "kdtree", "no-prune",
-        "no-order", "paper", ...; every name: drange._drange.variant_names). Every
+        "no-order", "paper", ...; every name: drange.variant_names). Every
         variant gives the same simplices; "fifo" and "spatial" fix the order in which
         open facets are taken (the paper's FIFO, or the spatial order that "full" uses
         in 3D to 5D), and "scan", "kdtree" and "paper" use FIFO: these number and list

@@ -155,7 +155,7 @@ class FacetPlaneTest {
     // about its one hyperplane many times, and on grids half the points that reach here lie on it.
     if (ties_.holds(ids_, id)) return 0;
     std::optional<int> small;
-    if (tie_balance_ > 0) small = fixed_width_sign(frame, x);
+    if (tie_balance_.mostly_ties()) small = fixed_width_sign(frame, x);
     if (!small) {
       // The double-double stage as the facet's cofactors, computed at its first near-tie: each
       // point then costs a dot product.
@@ -166,7 +166,7 @@ class FacetPlaneTest {
       small = refined_.sign_with(frame, x);
     }
     const int s = small ? *small : integer_orientation(frame, rows_.data());
-    note_outcome(tie_balance_, s == 0);
+    tie_balance_.note(s == 0);
     if (s == 0) ties_.record(ids_, id);
     return sigma_ * s;
   }
@@ -215,14 +215,6 @@ class FacetPlaneTest {
     return s > 0 ? hi[k] <= f0_[k] : s < 0 && lo[k] >= f0_[k];
   }
 
-  // Ties minus near-ties among the recent exact orientations, within +-kTieBalanceLimit:
-  // positive, the fixed-width stage goes before the double-double one. It orders the stages
-  // only; every stage's sign is exact.
-  static constexpr int kTieBalanceLimit = 16;
-  static void note_outcome(int& balance, bool tie) {
-    balance = tie ? std::min(balance + 1, kTieBalanceLimit) : std::max(balance - 1, -kTieBalanceLimit);
-  }
-
   int d_;
   bool filters_hold_, remember_ties_;
   double orient_gamma_, box_gamma_, minor_gamma_;
@@ -236,7 +228,7 @@ class FacetPlaneTest {
   std::array<double, kMaxRow> a_{}, a_abs_{};  // sigma O(x) = a . (x - f0), and its absolute tree
   bool exact_ = false;
   unsigned flat_axes_ = kFlatAxesUnknown;  // computed at the facet's first need
-  int tie_balance_ = 0;
+  TieBalance tie_balance_;
   KnownTies ties_;  // points proved on a facet's hyperplane, for the neighbouring facets' searches
   RefinedCofactors refined_;  // the facet's double-double cofactors, at its first near-tie
   bool refined_ready_ = false;

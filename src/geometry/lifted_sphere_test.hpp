@@ -192,16 +192,16 @@ class LiftedSphereTest {
     // the fixed-width integer stage first: it decides ties and near-ties alike, for less than
     // the double-double stage spends on a candidate's cofactors, which decide no tie. The
     // candidate's cofactors in those integers serve its later tests.
-    if (tie_balance_ > 0) {
+    if (tie_balance_.mostly_ties()) {
       if (!wide_ready_) {
-        wide_usable_ = wide_.prepare(frame, rows_.data());  // 3D to 6D (wide_determinant.hpp)
+        wide_usable_ = wide_.prepare(frame, rows_.data());  // the sizes wide_determinant.hpp covers
         wide_ready_ = true;
       }
       std::optional<int> s = wide_usable_ ? wide_.sign_with(x) : std::nullopt;
       if (s) count_exact_evaluation();
       else s = small_integer_lifted_sign(frame, rows_.data());
       if (s) {
-        note_outcome(tie_balance_, *s == 0);
+        tie_balance_.note(*s == 0);
         return sigma_ * (*s != 0 ? *s : lifted_tie_sign(frame, rows_.data(), ranks_.data(), sigma_));
       }
     }
@@ -213,10 +213,10 @@ class LiftedSphereTest {
     std::optional<int> refined = refined_.quick_sign_with(frame, x);
     if (!refined) refined = refined_.sign_with(frame, x);
     if (refined) {
-      note_outcome(tie_balance_, false);
+      tie_balance_.note(false);
       return sigma_ * *refined;
     }
-    note_outcome(tie_balance_, true);  // most likely a tie: the double-double stage decides no tie
+    tie_balance_.note(true);  // most likely a tie: the double-double stage decides no tie
     // The facet and the candidate, strictly on its open side, are affinely independent: they
     // define the candidate's sphere.
     std::array<std::int32_t, kMaxRow + 1> simplex;
@@ -242,11 +242,6 @@ class LiftedSphereTest {
     refined_ready_ = true;
   }
 
-  static constexpr int kTieBalanceLimit = 16;
-  static void note_outcome(int& balance, bool tie) {
-    balance = tie ? std::min(balance + 1, kTieBalanceLimit) : std::max(balance - 1, -kTieBalanceLimit);
-  }
-
   int d_;
   const std::int32_t* ranks_of_;
   bool filters_hold_, remember_ties_;
@@ -261,7 +256,7 @@ class LiftedSphereTest {
   StaticExactness::FacetMinors exact_{false, false};
   // sigma I(p, x) = w . r_x with w_j = sum_c k_[j][c] (r_p)_c (c != j).
   std::array<std::array<double, kMaxRow>, kMaxRow> k_{}, k_abs_{};
-  int tie_balance_ = 0;
+  TieBalance tie_balance_;
 
   // Per candidate.
   std::int32_t candidate_ = -1;

@@ -8,6 +8,7 @@
 // cannot decide; none of them perturbs unless it says so.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 
@@ -21,7 +22,7 @@ namespace drange::geometry {
 // integers: fixed-width or GMP).
 std::optional<int> filtered_orientation(const Frame& frame, const double* const* points);
 int exact_orientation(const Frame& frame, const double* const* points);
-// The exact stage's fixed-width part alone (wide_determinant.hpp: k <= 4, when the points'
+// The exact stage's fixed-width part alone (wide_determinant.hpp: its sizes, when the points'
 // differences fit), before the double-double stage, for a caller that meets mostly ties;
 // nullopt when it does not apply.
 std::optional<int> small_integer_orientation(const Frame& frame, const double* const* points);
@@ -44,8 +45,8 @@ int exact_lifted_sign_perturbed(const Frame& frame, const double* const* points,
 // that ran the double-double stage its own way (RefinedCofactors, refined_sign.hpp) and breaks
 // the ties itself with lifted_tie_sign.
 int integer_lifted_sign(const Frame& frame, const double* const* points);
-// Its first part alone: the exact value in fixed-width integers (wide_determinant.hpp), for k
-// = 2 to 4 in up to 4 dimensions when the points' differences fit; nullopt otherwise. About
+// Its first part alone: the exact value in fixed-width integers (wide_determinant.hpp, for the
+// sizes it covers) when the points' differences fit; nullopt otherwise. About
 // as cheap as the double-double stage for a candidate's cofactors and several times cheaper
 // than GMP: a caller that meets mostly exact ties asks it first.
 std::optional<int> small_integer_lifted_sign(const Frame& frame, const double* const* points);
@@ -53,5 +54,19 @@ std::optional<int> small_integer_lifted_sign(const Frame& frame, const double* c
 // Counts one exact evaluation that a caller made with a stage of its own (the predicate objects:
 // WideLiftedCofactors, wide_determinant.hpp), for exact_evaluations().
 void count_exact_evaluation();
+
+// Ties minus near-ties among a predicate object's recent exact tests, within +-kLimit: while
+// positive, its fixed-width integer stage goes before the double-double one (the integers
+// decide ties and near-ties alike; double-double never decides a tie). It orders the stages
+// only: every stage's sign is exact.
+class TieBalance {
+ public:
+  bool mostly_ties() const { return balance_ > 0; }
+  void note(bool tie) { balance_ = tie ? std::min(balance_ + 1, kLimit) : std::max(balance_ - 1, -kLimit); }
+
+ private:
+  static constexpr int kLimit = 16;
+  int balance_ = 0;
+};
 
 }  // namespace drange::geometry

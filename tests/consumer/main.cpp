@@ -5,8 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "drange/delaunay.hpp"
-#include "drange/voronoi.hpp"
+#include "drange/drange.hpp"
 
 int main() {
   drange::PointCloud square;

@@ -3,7 +3,7 @@
 // An accelerator proves that some point or node cannot be the answer, or offers a first
 // candidate; none ever changes the point a search finds (the Delaunay point of a facet is
 // unique under the perturbation), only how many points and nodes the search meets. The kernel
-// (search_kernel.hpp) asks this object alone, at five moments of a search:
+// (search_kernel.hpp) asks this object alone, at these moments of a search:
 //   - skips(facet):              before anything, may the whole search be skipped;
 //   - start_facet / seeds:       a new facet; the first candidates to try;
 //   - start_candidate / centred: a new candidate and its query ball;
@@ -12,8 +12,9 @@
 //   - scan_leaf / sign:          a leaf's points, and a point's sign, by an accelerator's means;
 //   - found(facet, apex):        the search's answer, for later searches.
 // Each accelerator lives in its own file and is registered here by one member; removing one
-// means deleting its file and its lines below. Each is built only when its SearchOptions
-// switch is on (prepare_points.cpp) and is off when its data is empty.
+// means deleting its file and its lines below. Each is off when its SearchOptions switch is
+// off or its data is empty; prepare_points.cpp builds the hull, shell and slab data only when
+// their switches are on (the seed memory is sized by its owner, FacetSearch or the pipeline).
 //
 // Registered:
 //   known hull facets (known_hull.hpp)       a clean hull facet's outer side is empty   no-hull
@@ -30,7 +31,7 @@
 #include "delaunay/search/shell_pruner.hpp"
 #include "delaunay/search/slab_pruner.hpp"
 #include "delaunay/seed_memory.hpp"
-#include "drange/delaunay.hpp"
+#include "delaunay/search_options.hpp"
 #include "drange/errors.hpp"
 
 namespace drange::engine {

@@ -35,7 +35,8 @@ class CandidateBall {
 
   // The sphere {x : sigma I(p, x) = w . r_x = 0} (r_x = (x - f0, |x - f0|^2)), each w_j within
   // error(j) of its exact value. false when w's lift coefficient is not certainly away from 0
-  // (no trustworthy box) or the reach is not finite; then nothing changes. `use_ball`: also
+  // (no trustworthy box) or the reach is not finite; then centre() may have changed but the
+  // box and the ball have not, and the caller sets another or resets. `use_ball`: also
   // query the ball, not only its box (else ball() stays false).
   template <class Error>
   [[gnu::always_inline]] inline bool set(const double* w, const Error& error, const double* f0, bool use_ball) {

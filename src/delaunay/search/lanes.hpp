@@ -3,8 +3,8 @@
 //
 // Every function returns a bit mask of lanes rather than a value per lane: the scan then
 // branches once per selected point, not once per lane. Each lane's operations, and their
-// order, are those of the one-point versions they stand for (the kernel's in_query and
-// prune, the orientation filter), so the same points pass whatever the vector width; the
+// order, are those of the one-point versions they stand for (CandidateBall::holds, the
+// kernel's prune, the plane's filter), so the same points pass whatever the vector width; the
 // AVX2 versions use no FMA, so their doubles are the two-double versions' too.
 #pragma once
 
