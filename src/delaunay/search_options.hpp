@@ -62,12 +62,10 @@ struct SearchOptions {
   bool known_hull_facets = true;
 };
 
-// Parses a variant name (drange::variant_names() lists them): "full", "scan", "kdtree" (no
-// optimisation), "no-prune", "no-order", "paper" (the paper's three steps and nothing else,
-// FIFO order), "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-tie-memory", "no-slab",
-// "no-hull", "fifo" (full with the paper's FIFO facet order in every dimension), "spatial"
-// (full with the spatial facet order in every dimension).
-// Throws UsageError naming the unknown value and the accepted names.
+// The options of a named variant (search_options.cpp's table; drange::variant_names() lists
+// them): "full", each "no-X" with one step off, "paper" (the paper's three steps alone, FIFO),
+// "scan" and "kdtree" (no tree; a tree and nothing else), "fifo" and "spatial" (full with that
+// facet order in every dimension). Throws UsageError naming the unknown value and the names.
 SearchOptions search_variant(const std::string& name);
 
 }  // namespace drange::engine
