@@ -372,7 +372,10 @@ TEST(DelaunayRobustness, HardFamilies) {
     PointCloud c{3, {}};
     for (int i = 0; i < 300; ++i) {
       double v[3], r = 0;
-      for (double& x : v) r += (x = gauss(rng)) * x;
+      for (double& x : v) {
+        x = gauss(rng);
+        r += x * x;
+      }
       for (double& x : v) c.coords.push_back(std::nextafter(x / std::sqrt(r), (rng() & 1) ? 2.0 : -2.0));
     }
     cases.emplace_back("sphere moved by one ulp", c);

@@ -9,11 +9,9 @@
 // with a nearly flat face (nearly cospherical input: any triangulation of the sphere's points
 // is Delaunay, slivers included) has far-away face centres whose big signed pieces cancel;
 // a review found cells off by several percent. Such a simplex (a face whose new vertex is
-// closer than kFlatFace of its distance to the face's hull) is redone in quad precision
-// (__float128, 113-bit significand).
+// closer than kFlatFace of its distance to the face's hull) is redone in extended precision
+// (extended_real.hpp: quad where the compiler has it, else double-double).
 #include "voronoi/flag_volumes.hpp"
-
-#include <quadmath.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,16 +19,12 @@
 #include <cstdint>
 
 #include "util/for_ranges.hpp"
+#include "voronoi/extended_real.hpp"
 
 namespace drange::diagram {
 namespace {
 
 constexpr double kFlatFace = 1e-2;
-
-using Quad = __float128;
-
-double root(double x) { return std::sqrt(x); }
-Quad root(Quad x) { return sqrtq(x); }
 
 // The pieces of one simplex's flags, in arithmetic Real.
 template <class Real>
@@ -162,7 +156,7 @@ std::vector<double> flag_cell_volumes(PointsView points, const Triangulation& t,
     const std::size_t count = std::min(kBlock, t.size() - first);
     util::for_ranges(count, team, [&](std::size_t, std::size_t begin, std::size_t end) {
       SimplexPieces<double> fast(t.dim);
-      SimplexPieces<Quad> careful(t.dim);
+      SimplexPieces<ExtendedReal> careful(t.dim);
       for (std::size_t i = begin; i < end; ++i) {
         const std::int32_t* row = t.simplex(first + i);
         double* part = &parts[i * w];

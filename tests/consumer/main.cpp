@@ -1,7 +1,8 @@
 // A consumer of drange's public API: the four corners of the unit square and its centre give
 // four triangles, and the centre's Voronoi cell is the diamond through the edges' midpoints,
-// of area 1/2. The Voronoi step pulls in the code that needs quadmath, so the link line must
-// carry every private dependency of the static library. Exits 1 on a wrong answer.
+// of area 1/2. The Voronoi step pulls in the code that needs quadmath (in GCC builds), so the
+// link line must carry every private dependency of the static library. Exits 1 on a wrong
+// answer.
 #include <cmath>
 #include <cstdio>
 
