@@ -58,6 +58,7 @@ class Delaunay(PointSetAttributes):
         check_scipy_arguments(furthest_site, incremental, qhull_options)
         check_options(variant, threads)
         self.points = as_points(points)
+        self._arguments = {"threads": int(threads), "variant": variant}
         self._core = _drange.triangulate(self.points, variant, int(threads), progress)
         self._threads = int(threads)
         self.simplices = self._core.simplices

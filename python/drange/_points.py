@@ -1,4 +1,6 @@
-"""Turning what the user passes into what the engine reads."""
+"""Turning what the user passes into what the engine reads; what every class shares."""
+import copy
+
 import numpy as np
 
 from . import _drange
@@ -32,8 +34,33 @@ def check_options(variant, threads):
         raise TypeError(f"threads must be an integer; got {type(threads).__name__}")
 
 
+def _rebuild(cls, points, arguments):
+    """Unpickling: the same class on the same points and arguments gives the same result (the
+    engine is exact and deterministic); pickle then restores the original run's figures."""
+    return cls(points, **arguments)
+
+
 class PointSetAttributes:
-    """scipy's attributes that depend on the points alone (`self.points` set by the subclass)."""
+    """scipy's attributes that depend on the points alone (`self.points` set by the subclass),
+    and pickling and copying. A subclass records its keyword arguments in `self._arguments`."""
+
+    def __reduce__(self):
+        # The engine's object does not pickle, and need not: the points and the arguments
+        # rebuild it, identical, and the pickle holds the points only.
+        return _rebuild, (type(self), self.points, self._arguments), {"statistics": self.statistics}
+
+    def __copy__(self):
+        result = object.__new__(type(self))
+        result.__dict__.update(self.__dict__)
+        return result
+
+    def __deepcopy__(self, memo):
+        # The engine's object is immutable: shared. Every array and cached attribute is copied.
+        result = object.__new__(type(self))
+        memo[id(self)] = result
+        for name, value in self.__dict__.items():
+            result.__dict__[name] = value if name == "_core" else copy.deepcopy(value, memo)
+        return result
 
     npoints = property(lambda self: self.points.shape[0], doc="Number of input points.")
     ndim = property(lambda self: self.points.shape[1], doc="Dimension of the space.")

@@ -51,6 +51,7 @@ class Voronoi(PointSetAttributes):
         check_scipy_arguments(furthest_site, incremental, qhull_options)
         check_options(variant, threads)
         self.points = as_points(points)
+        self._arguments = {"threads": int(threads), "variant": variant, "cell_volumes": bool(cell_volumes)}
         self._core = _drange.voronoi(self.points, variant, int(threads), bool(cell_volumes), progress)
         self.vertices = self._core.vertices
         self.ridge_points = self._core.ridge_points
