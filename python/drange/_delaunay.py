@@ -7,6 +7,20 @@ from . import _drange
 from ._points import PointSetAttributes, as_points, check_options, check_scipy_arguments
 
 
+def _inverses(matrices):
+    """The inverse of each matrix; NaN for those numpy finds singular."""
+    try:
+        return np.linalg.inv(matrices)
+    except np.linalg.LinAlgError:
+        result = np.full(matrices.shape, np.nan)
+        for i, matrix in enumerate(matrices):
+            try:
+                result[i] = np.linalg.inv(matrix)
+            except np.linalg.LinAlgError:
+                pass
+        return result
+
+
 class Delaunay(PointSetAttributes):
     """Delaunay triangulation in N >= 2 dimensions, exact.
 
@@ -72,9 +86,12 @@ class Delaunay(PointSetAttributes):
 
     @cached_property
     def vertex_to_simplex(self):
-        """For each point, a simplex it is a vertex of; -1 for duplicates."""
+        """For each point, a simplex it is a vertex of; for an exact duplicate, one of the point
+        it copies (as scipy gives one for its coplanar points)."""
         result = np.full(self.npoints, -1, dtype=np.int32)
         result[self.simplices.ravel()] = np.repeat(np.arange(self.nsimplex, dtype=np.int32), self.ndim + 1)
+        pairs = self._core.duplicates
+        result[pairs[:, 0]] = result[pairs[:, 1]]
         return result
 
     @cached_property
@@ -119,14 +136,21 @@ class Delaunay(PointSetAttributes):
     def transform(self):
         """(nsimplex, ndim+1, ndim): barycentric transforms, as scipy's. For simplex i,
         c = transform[i, :ndim] @ (x - transform[i, ndim]) gives the first ndim barycentric
-        coordinates of x; the last is 1 - sum(c)."""
+        coordinates of x; the last is 1 - sum(c). As scipy's, a simplex too flat for floating
+        point (reciprocal condition number, 1-norm, below 1000 eps) has a row of NaN: drange's
+        simplices are never flat exactly, but can be within rounding."""
         d = self.ndim
         corners = self.points[self.simplices]  # (nsimplex, d+1, d)
         origin = corners[:, d, :]
         columns = (corners[:, :d, :] - origin[:, None, :]).transpose(0, 2, 1)
+        inverse = _inverses(columns)
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            norms = np.abs(columns).sum(axis=1).max(axis=1) * np.abs(inverse).sum(axis=1).max(axis=1)
+            too_flat = ~(1.0 / norms >= 1000 * np.finfo(np.float64).eps)  # NaN counts as too flat
         result = np.empty((self.nsimplex, d + 1, d))
-        result[:, :d, :] = np.linalg.inv(columns)
+        result[:, :d, :] = inverse
         result[:, d, :] = origin
+        result[too_flat] = np.nan
         return result
 
     @cached_property

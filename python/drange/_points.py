@@ -11,6 +11,8 @@ def as_points(points):
     array = np.asarray(points, dtype=np.float64)
     if array.ndim != 2:
         raise ValueError(f"points must be a 2-D array of shape (npoints, ndim); got shape {array.shape}")
+    if array.shape[0] == 0:
+        raise ValueError("No points given")  # scipy's message and type
     return np.ascontiguousarray(array)
 
 

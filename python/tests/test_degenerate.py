@@ -113,7 +113,10 @@ def test_duplicates_are_reported_as_coplanar():
     assert tri.coplanar.tolist() == [[200, tri.vertex_to_simplex[3], 3],
                                      [201, tri.vertex_to_simplex[5], 5],
                                      [202, tri.vertex_to_simplex[5], 5]]
-    assert (tri.vertex_to_simplex[200:] == -1).all()
+    # As scipy's: a duplicate's vertex_to_simplex is a simplex of the point it copies.
+    for copy, original in [(200, 3), (201, 5), (202, 5)]:
+        assert tri.vertex_to_simplex[copy] == tri.vertex_to_simplex[original]
+        assert original in tri.simplices[tri.vertex_to_simplex[copy]]
     assert set(simplex_keys(tri.simplices)) == set(simplex_keys(drange.Delaunay(base).simplices))
     # A duplicate is found in a simplex that holds its original.
     assert 3 in tri.simplices[tri.find_simplex(points[200])]
