@@ -31,7 +31,8 @@ class Delaunay(PointSetAttributes):
     furthest_site, incremental, qhull_options
         scipy's arguments, accepted so that code switches in one line. Only the defaults are
         supported (furthest_site=True and incremental=True raise NotImplementedError);
-        qhull_options has no effect, since no decision needs a tolerance or a joggle.
+        qhull_options has no effect, since no decision needs a tolerance, except that 'QJ'
+        (joggling) raises ValueError: drange never joggles.
     threads : int, keyword only
         Threads for the search and for find_simplex; 0 (default) uses all cores.
     variant : str, keyword only

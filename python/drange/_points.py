@@ -24,7 +24,11 @@ def check_scipy_arguments(furthest_site, incremental, qhull_options):
         raise NotImplementedError("incremental=True (add_points) is not supported by drange")
     if qhull_options is not None and not isinstance(qhull_options, (str, bytes)):
         raise TypeError(f"qhull_options must be a string or None; got {type(qhull_options).__name__}")
-    # Qhull's options (joggling, tolerances, triangulated output) have no effect: every
+    options = qhull_options.decode() if isinstance(qhull_options, bytes) else (qhull_options or "")
+    if any(option.startswith("QJ") for option in options.split()):
+        raise ValueError("qhull_options 'QJ' (joggle the input) has no meaning in drange: every decision is "
+                         "exact, and degenerate input gives one well-defined triangulation without joggling")
+    # Qhull's other options (tolerances, triangulated output, ...) have no effect: every
     # decision is exact and the output is always simplicial.
 
 

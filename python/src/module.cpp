@@ -128,9 +128,21 @@ py::dict clipped_dict(const ClippedCells& cells) {
   return d;
 }
 
+// scipy.spatial.QhullError (a RuntimeError) where scipy is importable, so that code written for
+// scipy catches drange's errors as it catches Qhull's; RuntimeError otherwise.
+PyObject* error_base() {
+  try {
+    py::object base = py::module_::import("scipy.spatial").attr("QhullError");
+    return base.release().ptr();  // a new reference, kept for the module's life
+  } catch (py::error_already_set&) {  // no scipy: its error is cleared with the exception object
+    return PyExc_RuntimeError;
+  }
+}
+
 void register_errors(py::module_& m) {
   static PyObject* const error = PyErr_NewExceptionWithDoc(
-      "drange.Error", "Base of the errors drange raises for reasons of its own.", PyExc_RuntimeError, nullptr);
+      "drange.Error", "Base of the errors drange raises for reasons of its own (a scipy.spatial.QhullError "
+      "when scipy is installed, else a RuntimeError).", error_base(), nullptr);
   static PyObject* const degenerate = PyErr_NewExceptionWithDoc(
       "drange.DegenerateInputError",
       "The points have no full-dimensional triangulation: fewer than ndim+1 distinct points, or all in one hyperplane.",

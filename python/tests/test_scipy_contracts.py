@@ -45,3 +45,24 @@ def test_transform_matches_scipy_on_the_same_simplices(d):
             assert mine[vertex] == pytest.approx(other[vertex], abs=1e-9)
         checked += 1
     assert checked > 0.9 * ours.nsimplex
+
+
+def test_errors_are_qhull_errors_for_code_written_for_scipy():
+    assert issubclass(drange.Error, scipy.spatial.QhullError)
+    assert issubclass(drange.DegenerateInputError, scipy.spatial.QhullError)
+    collinear = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 2.0], [3.0, 3.0]])
+    for cls in (drange.Delaunay, drange.Voronoi):
+        with pytest.raises(scipy.spatial.QhullError, match="hyperplane|distinct"):
+            cls(collinear)
+
+
+@pytest.mark.parametrize("options", ["QJ", "Qbb QJ", b"QJ0.001", "Qc QJn"])
+def test_joggling_is_rejected_with_a_reason(options):
+    with pytest.raises(ValueError, match="QJ.*exact"):
+        drange.Delaunay(sample("uniform", 20, 2, seed=1), qhull_options=options)
+
+
+def test_other_qhull_options_are_accepted():
+    points = sample("uniform", 50, 2, seed=2)
+    reference = drange.Delaunay(points).simplices
+    np.testing.assert_array_equal(drange.Delaunay(points, qhull_options="Qbb Qc Qz Q12").simplices, reference)
