@@ -16,7 +16,10 @@
 #     delaunay INPUT -o simplices.txt --neighbors neighbors.txt -q --threads T
 # and, on the 2D and 3D inputs and the 4D decimal_grid4,
 #     voronoi INPUT -o voronoi.json -q --threads T
-# (vertices, ridge_points, ridge_vertices, regions, point_region, volumes). Skipped for voronoi:
+# (vertices, ridge_points, ridge_vertices, regions, point_region, volumes). Then, on 1 thread,
+# every --variant but full on a few small inputs (a 3D sphere, a 5D decimal grid, uniform 8D;
+# --quick: the sphere alone): a variant switches parts of the engine off, which the default
+# runs never exercise. Skipped for voronoi:
 # uniform 3D 1 000 000 (1.2 GB of JSON per run; uniform 3D 216 000 stands for it). Each run's exit
 # status and standard error are compared too, and a run that fails counts as a difference.
 #
@@ -25,9 +28,8 @@
 # $SAME_OUTPUT_DATA/first-difference. Runs take scripts/ab_time.sh's lock (/tmp/drange-machine.lock):
 # the two 1-thread runs share it and run side by side, a 2-thread run holds it alone.
 #
-# The full run takes about a quarter of an hour on 2 cores shared with other work (some 9 minutes
-# of CPU time); --quick, a subset touching 2D to 6D, the degenerate families' exact stages and
-# voronoi, takes one to two minutes.
+# The full run takes about twenty minutes on 2 cores; --quick, a subset touching 2D to 8D, the
+# degenerate families' exact stages, voronoi and the variants on the sphere, about two.
 set -uo pipefail
 
 usage() { sed -n '2,5p' "$0" >&2; exit 2; }
@@ -62,7 +64,7 @@ uniform 20000 2
 uniform 20000 3
 sphere 200000 2"
 quick_inputs="two_circles five_spheres3 decimal_grid3 plateau rounded3 two_spheres4 decimal_grid4 decimal_grid5
-  decimal_grid6 uniform_2d_100000 sphere_2d_20000 uniform_3d_100000 sphere_3d_2000 uniform_4d_100000"
+  decimal_grid6 uniform_2d_100000 sphere_2d_20000 uniform_3d_100000 sphere_3d_2000 uniform_4d_100000 uniform_8d_300"
 no_voronoi="uniform_3d_1000000"
 voronoi_4d="decimal_grid4"
 listed() { local word; for word in $2; do [ "$word" = "$1" ] && return 0; done; return 1; }  # NAME LIST
@@ -83,13 +85,16 @@ while read -r dist n d; do
   inputs+=("$file")
 done <<<"$generated"
 
-# run EXE DIR THREADS INPUT VORONOI: the outputs into DIR, with each command's exit status and
-# standard error in DIR/status.
+variant_inputs="sphere_3d_2000 decimal_grid5 uniform_8d_300"
+variants="scan kdtree no-prune no-order paper no-bottom-up no-seed no-ball no-shell no-tie-memory no-slab no-hull fifo spatial"
+
+# run EXE DIR THREADS INPUT VORONOI [VARIANT]: the outputs into DIR, with each command's exit
+# status and standard error in DIR/status.
 run() {
-  local exe=$1 dir=$2 threads=$3 input=$4 voronoi=$5 rc
+  local exe=$1 dir=$2 threads=$3 input=$4 voronoi=$5 variant=${6:-full} rc
   mkdir -p "$dir"
   rc=0; "$exe" delaunay "$input" -o "$dir/simplices.txt" --neighbors "$dir/neighbors.txt" -q \
-    --threads "$threads" 2>"$dir/delaunay.err" || rc=$?
+    --threads "$threads" --variant "$variant" 2>"$dir/delaunay.err" || rc=$?
   echo "delaunay exit $rc" >>"$dir/status"; cat "$dir/delaunay.err" >>"$dir/status"; rm "$dir/delaunay.err"
   if [ "$voronoi" = 1 ]; then
     rc=0; "$exe" voronoi "$input" -o "$dir/voronoi.json" -q --threads "$threads" 2>"$dir/voronoi.err" || rc=$?
@@ -103,6 +108,20 @@ work=$(mktemp -d "$data/run.XXXXXX") || exit 2
 trap 'rm -rf "$work"' EXIT
 rm -rf "$data/first-difference"
 same=0 different=0 started=$SECONDS
+# compare LABEL: the outputs in $work/a and $work/b, one line of verdict.
+compare() {
+  local differ="" file
+  for file in $( (ls "$work/a"; ls "$work/b") | sort -u); do
+    cmp -s "$work/a/$file" "$work/b/$file" || differ+=" $file"
+  done
+  if grep -q "exit [^0]" "$work/a/status" "$work/b/status"; then differ+=" (a run failed: see status)"; fi
+  if [ -z "$differ" ]; then
+    echo "${1}same"; same=$((same + 1))
+  else
+    echo "${1}DIFFERENT:$differ"; different=$((different + 1))
+    if [ ! -e "$data/first-difference" ]; then mv "$work" "$data/first-difference"; mkdir "$work"; fi
+  fi
+}
 for input in "${inputs[@]}"; do
   name=$(basename "$input" .txt)
   if [ $quick -eq 1 ] && ! listed "$name" "$quick_inputs"; then continue; fi
@@ -117,19 +136,15 @@ for input in "${inputs[@]}"; do
       locked -x run "$a" "$work/a" "$threads" "$input" $voronoi
       locked -x run "$b" "$work/b" "$threads" "$input" $voronoi
     fi
-    differ=""
-    for file in $( (ls "$work/a"; ls "$work/b") | sort -u); do
-      cmp -s "$work/a/$file" "$work/b/$file" || differ+=" $file"
-    done
-    if grep -q "exit [^0]" "$work/a/status" "$work/b/status"; then differ+=" (a run failed: see status)"; fi
-    label=$(printf '%-22s %dD  threads %d  ' "$name" "$d" "$threads")
-    if [ -z "$differ" ]; then
-      echo "${label}same"; same=$((same + 1))
-    else
-      echo "${label}DIFFERENT:$differ"; different=$((different + 1))
-      if [ ! -e "$data/first-difference" ]; then mv "$work" "$data/first-difference"; mkdir "$work"; fi
-    fi
+    compare "$(printf '%-22s %dD  threads %d  ' "$name" "$d" "$threads")"
   done
+  if listed "$name" "$variant_inputs" && { [ $quick -eq 0 ] || [ "$name" = sphere_3d_2000 ]; }; then
+    for variant in $variants; do
+      rm -rf "$work/a" "$work/b"
+      locked -s run "$a" "$work/a" 1 "$input" 0 "$variant" & locked -s run "$b" "$work/b" 1 "$input" 0 "$variant" & wait
+      compare "$(printf '%-22s %dD  %-14s ' "$name" "$d" "$variant")"
+    done
+  fi
 done
 echo "same_output.sh: $same same, $different different ($(( (SECONDS - started) / 60 )) min $(( (SECONDS - started) % 60 )) s)"
 [ $different -eq 0 ]
