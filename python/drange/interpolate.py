@@ -102,7 +102,8 @@ class LinearNDInterpolator(_ScatteredInterpolator):
     Parameters
     ----------
     points : ndarray of floats, shape (npoints, ndim), or a drange.Delaunay
-        The sample points (2 <= ndim <= 11), or their triangulation.
+        The sample points (2 <= ndim <= 11), or their triangulation (a scipy.spatial.Delaunay
+        is used too, with its own find_simplex).
     values : ndarray of float or complex, shape (npoints, ...)
         The values at the points; trailing dimensions are interpolated independently.
     fill_value : float, optional

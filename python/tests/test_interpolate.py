@@ -3,6 +3,7 @@
 import numpy as np
 import pytest
 import scipy.interpolate
+import scipy.spatial
 
 import drange
 from drange import interpolate
@@ -113,6 +114,15 @@ def test_a_delaunay_passed_in_is_used_as_is():
     np.testing.assert_array_equal(ip(xi), interpolate.LinearNDInterpolator(points, values)(xi))
     with pytest.raises(ValueError, match="Rescaling is not supported"):
         interpolate.LinearNDInterpolator(tri, values, rescale=True)
+
+
+def test_a_scipy_delaunay_passed_in_is_used_too():
+    points = sample("uniform", 300, 2, seed=21)
+    values, xi = smooth(points), queries(500, 2, seed=22)
+    tri = scipy.spatial.Delaunay(points)
+    ip = interpolate.LinearNDInterpolator(tri, values)
+    assert ip.tri is tri
+    np.testing.assert_allclose(ip(xi), scipy.interpolate.LinearNDInterpolator(points, values)(xi), rtol=1e-12)
 
 
 def test_rescale_triangulates_in_the_unit_cube_as_scipy():
