@@ -5,6 +5,9 @@ line::
 
     from drange import Delaunay, Voronoi      # instead of: from scipy.spatial import ...
 
+drange.interpolate has scipy.interpolate's LinearNDInterpolator, NearestNDInterpolator and
+griddata over the exact triangulation.
+
 Every decision is exact (no joggling, no tolerance): integer grids, cospherical points and
 duplicates give one well-defined triangulation, the same for any input order.
 """
@@ -12,6 +15,7 @@ from ._drange import DegenerateInputError, Error, variant_names
 from ._delaunay import Delaunay
 from ._voronoi import ClippedCells, Voronoi
 from ._check import check_triangulation
+from . import interpolate
 
-__all__ = ["Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error", "DegenerateInputError", "variant_names"]
+__all__ = ["Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error", "DegenerateInputError", "variant_names", "interpolate"]
 __version__ = "0.1.0"
