@@ -28,7 +28,7 @@
 # $SAME_OUTPUT_DATA/first-difference. Runs take scripts/ab_time.sh's lock (/tmp/drange-machine.lock):
 # the two 1-thread runs share it and run side by side, a 2-thread run holds it alone.
 #
-# The full run takes about twenty minutes on 2 cores; --quick, a subset touching 2D to 8D, the
+# The full run takes about ten minutes on 2 cores; --quick, a subset touching 2D to 8D, the
 # degenerate families' exact stages, voronoi and the variants on the sphere, about two.
 set -uo pipefail
 
