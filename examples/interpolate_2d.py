@@ -17,6 +17,7 @@ import numpy as np
 from matplotlib.collections import PolyCollection
 
 import drange
+from drange.interpolate import LinearNDInterpolator
 
 
 def f(x, y):
@@ -34,17 +35,13 @@ cells = vor.clipped_cells(box=([0, 0], [1, 1]))  # every cell cut to the unit sq
 print(f"{tri.nsimplex} triangles, {len(vor.vertices)} Voronoi vertices; "
       f"the clipped cells cover {cells.volumes.sum():.6f} of the unit square")
 
-# %% Linear interpolation: find the triangle of each grid point, weight by barycentric coordinates
+# %% Linear interpolation on the triangulation (scipy.interpolate's interface): each grid point's
+# triangle found exactly, its value weighted by barycentric coordinates; NaN outside the hull
 side = np.linspace(0, 1, 200)
 gx, gy = np.meshgrid(side, side)
 queries = np.c_[gx.ravel(), gy.ravel()]
-simplex = tri.find_simplex(queries)  # exact; -1 outside the convex hull
-inside = simplex >= 0
-transform = tri.transform[simplex[inside]]
-partial = np.einsum("ijk,ik->ij", transform[:, :2, :], queries[inside] - transform[:, 2, :])
-weights = np.c_[partial, 1 - partial.sum(axis=1)]
-interpolated = np.full(len(queries), np.nan)
-interpolated[inside] = np.einsum("ij,ij->i", weights, values[tri.simplices[simplex[inside]]])
+interpolated = LinearNDInterpolator(tri, values)(queries)
+inside = ~np.isnan(interpolated)
 error = np.abs(interpolated[inside] - f(queries[inside, 0], queries[inside, 1]))
 print(f"{inside.sum()} of {len(queries)} grid points inside the hull; "
       f"interpolation error: max {error.max():.4f}, mean {error.mean():.5f}")

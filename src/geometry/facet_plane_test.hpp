@@ -122,7 +122,6 @@ class FacetPlaneTest {
   const double* abs_coefficients() const { return a_abs_.data(); }
   double orient_gamma() const { return orient_gamma_; }
   double box_gamma() const { return box_gamma_; }
-  bool filters_hold() const { return filters_hold_; }
 
  private:
   static constexpr unsigned kFlatAxesUnknown = ~0u;

@@ -24,7 +24,6 @@ class StaticExactness {
     for (int units = 0; units <= d + 2; ++units)
       limits_[static_cast<std::size_t>(units)] = power_of_two_limit(52 + unit_exponent * units);
   }
-  bool dyadic() const { return dyadic_; }
   // A value of `units` units whose absolute tree is below this was computed exactly (0 when
   // the points are not dyadic: nothing is proved).
   double limit(int units) const { return limits_[static_cast<std::size_t>(units)]; }

@@ -26,7 +26,6 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
-#include <string>
 
 #include "delaunay/facet_search.hpp"
 #include "delaunay/leaf_blocks.hpp"
@@ -72,6 +71,10 @@ class SearchKernel final : public FacetSearch::Kernel {
 
  private:
   int dim() const { return D > 0 ? D : d_; }
+  // What the predicates may prove exact: only with dyadic points whose filters hold (scaled).
+  static geometry::StaticExactness exactness_of(const PointStore& points) {
+    return geometry::StaticExactness(points.dim, points.dyadic && points.scaled, points.unit_exponent);
+  }
   void set_facet(const std::int32_t* facet, int sigma);
   [[gnu::always_inline]] inline void set_candidate(std::int32_t id);
   // A new query region from sigma I(p, x) = w . r_x with errors error(j); false when w gives
@@ -170,7 +173,6 @@ class SearchKernel final : public FacetSearch::Kernel {
 
   // The predicates; last, being large (their exact stages' fixed-width cofactors), apart from
   // the members that every search reads.
-  geometry::StaticExactness exactness_;
   geometry::FacetPlaneTest<D> plane_;
   geometry::LiftedSphereTest<D> sphere_;
 };
@@ -185,9 +187,8 @@ SearchKernel<D>::SearchKernel(const PointStore& points, const SearchOptions& opt
       region_(points.dim),
       blocks_(points.blocks),
       accelerators_(points, options, seeds),
-      exactness_(points.dim, points.dyadic && points.scaled, points.unit_exponent),
-      plane_(points.dim, points.size, points.scaled, options.remember_ties, exactness_),
-      sphere_(points.dim, points.size, points.tree.order().data(), points.scaled, options.remember_ties, exactness_) {
+      plane_(points.dim, points.size, points.scaled, options.remember_ties, exactness_of(points)),
+      sphere_(points.dim, points.size, points.tree.order().data(), points.scaled, options.remember_ties, exactness_of(points)) {
 #if DRANGE_AVX2_LANES
   avx2_ = wide && __builtin_cpu_supports("avx2");
 #else
