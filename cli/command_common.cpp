@@ -38,6 +38,14 @@ std::string variant_option(const Arguments& arguments) {
   return name;
 }
 
+std::string algorithm_option(const Arguments& arguments) {
+  const std::string name = arguments.value_or("algorithm", "auto");
+  const std::string names = std::string(", ") + algorithm_names() + ", ";
+  if (names.find(", " + name + ", ") == std::string::npos)
+    throw UsageError("--algorithm: unknown algorithm '" + name + "' (expected one of: " + algorithm_names() + ")");
+  return name;
+}
+
 bool standard_input_has_points() {
   return !isatty(STDIN_FILENO) && std::cin.peek() != std::char_traits<char>::eof();
 }

@@ -33,6 +33,8 @@ int threads_option(const Arguments& arguments);
 // The --variant value (Options::variant, default "full"), checked against variant_names()
 // before any input is read. Throws UsageError naming the value and the accepted names.
 std::string variant_option(const Arguments& arguments);
+// --algorithm NAME (default auto), checked against algorithm_names().
+std::string algorithm_option(const Arguments& arguments);
 
 // Throws UsageError when two output options name the same file (other than none).
 void expect_distinct_outputs(const Arguments& arguments, const std::vector<const char*>& options,

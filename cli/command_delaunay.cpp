@@ -21,7 +21,7 @@ namespace {
 const std::vector<OptionSpec> kOptions = {
     {"output", 'o', true}, {"format", 0, true},  {"neighbors", 0, true}, {"svg", 0, true},
     {"circles", 0, false}, {"stats", 0, false}, {"variant", 0, true},   {"threads", 0, true},
-    {"quiet", 'q', false},
+    {"quiet", 'q', false}, {"algorithm", 0, true},
 };
 
 int triangulate_file(const std::string& input, const Arguments& arguments) {
@@ -32,6 +32,7 @@ int triangulate_file(const std::string& input, const Arguments& arguments) {
   const bool quiet = arguments.has("quiet");
   Options options;
   options.variant = variant_option(arguments);
+  options.algorithm = algorithm_option(arguments);
   options.threads = threads_option(arguments);
   options.compute_neighbors = arguments.has("neighbors") || format != OutputFormat::Qhull;
 

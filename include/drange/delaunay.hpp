@@ -19,7 +19,19 @@ const char* variant_names();
 // How often Options::progress is called: every kProgressInterval simplices found.
 inline constexpr std::size_t kProgressInterval = std::size_t{1} << 16;
 
+// The names Options::algorithm accepts, comma-separated, for help texts.
+const char* algorithm_names();
+
 struct Options {
+  // The construction. "direct": the D-Range direct algorithm, a search for the point that
+  // closes each open facet (the paper's). "incremental": the points inserted one by one in a
+  // biased randomized order, each cavity of cells in conflict refilled (Bowyer-Watson), with the
+  // same exact predicates and perturbation, whose work per simplex does not depend on the
+  // input's shape. "auto" (the default): see docs/algorithm.md. Both give the same simplices, in
+  // another order and numbering. A `variant` other than "full" measures the direct algorithm and
+  // selects it; delaunay() throws UsageError for an unknown name, or "incremental" with such a
+  // variant.
+  std::string algorithm = "auto";
   // The name of an ablation variant, for measurements: "full" (the default, the whole
   // algorithm) or one with a step of the search left out or a fixed facet order (the paper's
   // own steps alone: "paper"; every name: variant_names()). Every variant gives the same

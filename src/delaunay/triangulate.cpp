@@ -29,6 +29,7 @@
 #include "delaunay/facet_search.hpp"
 #include "delaunay/first_facet.hpp"
 #include "delaunay/frontier.hpp"
+#include "delaunay/incremental/bowyer_watson.hpp"
 #include "delaunay/prepare_points.hpp"
 #include "delaunay/search_pipeline.hpp"
 #include "delaunay/team.hpp"
@@ -197,7 +198,8 @@ void search(Frontier<Queue>& frontier, const engine::FirstFacet& first, const en
 
 }  // namespace
 
-Triangulation engine::triangulate(PointsView input, const Options& options, const SearchOptions& search_options) {
+Triangulation engine::triangulate(PointsView input, const Options& options, const SearchOptions& search_options,
+                                  bool incremental) {
   const auto start = Clock::now();
   const std::uint64_t exact_before = geometry::exact_evaluations();
   Triangulation result;
@@ -232,7 +234,12 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
   phase = Clock::now();
   std::vector<std::int32_t>& simplices = result.simplices;
   SearchTotals totals;
-  if (spatial_order(search_options.facet_order, d)) {
+  if (incremental) {
+    const engine::IncrementalCounters counters =
+        engine::triangulate_incrementally(points, first, result, options.compute_neighbors, options.progress);
+    totals.counters.calls = counters.walk_steps;
+    totals.counters.points_tested = counters.conflict_tests;
+  } else if (spatial_order(search_options.facet_order, d)) {
     Frontier<engine::SpatialFacetQueue> frontier(d, points.size, result, options.progress,
                                                  engine::SpatialFacetQueue(d, points.size, kSpatialBlockShift),
                                                  options.compute_neighbors);
@@ -260,8 +267,19 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
   return result;
 }
 
+const char* algorithm_names() { return "auto, direct, incremental"; }
+
 Triangulation delaunay(PointsView input, const Options& options) {
-  return engine::triangulate(input, options, engine::search_variant(options.variant));
+  const SearchOptions search_options = engine::search_variant(options.variant);
+  const bool variant = options.variant != "full";
+  if (options.algorithm == "incremental" && variant)
+    throw UsageError("the variant '" + options.variant + "' measures the direct algorithm; it cannot be combined with algorithm 'incremental'");
+  bool incremental = false;
+  if (options.algorithm == "incremental") incremental = true;
+  else if (options.algorithm == "auto") incremental = false;
+  else if (options.algorithm != "direct")
+    throw UsageError("unknown algorithm '" + options.algorithm + "' (expected one of: " + algorithm_names() + ")");
+  return engine::triangulate(input, options, search_options, incremental);
 }
 
 }  // namespace drange
