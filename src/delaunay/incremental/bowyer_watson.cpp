@@ -2,6 +2,7 @@
 #include "delaunay/incremental/bowyer_watson.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,6 +54,10 @@ class Insertion {
   }
 
   void insert(std::int32_t q) {
+    if (stamp_ > kLastStamp) {
+      cells_.clear_marks();
+      stamp_ = 0;
+    }
     stamp_ += 4;
     find_conflicts(q, locate(q));
     fill_cavity(q);
@@ -63,9 +68,11 @@ class Insertion {
   std::size_t finite_cells() const { return finite_cells_; }
 
  private:
-  std::uint64_t conflict_mark() const { return stamp_ + 1; }
-  std::uint64_t outside_mark() const { return stamp_ + 2; }
-  std::uint64_t new_mark() const { return stamp_ + 3; }
+  // Each insertion's marks are new values, so that no mark needs clearing between insertions.
+  static constexpr std::int32_t kLastStamp = std::numeric_limits<std::int32_t>::max() - 8;
+  std::int32_t conflict_mark() const { return stamp_ + 1; }
+  std::int32_t outside_mark() const { return stamp_ + 2; }
+  std::int32_t new_mark() const { return stamp_ + 3; }
 
   // A cell in conflict with q: the finite cell whose closed simplex holds q (every point of a
   // closed simplex but its vertices is strictly inside its circumsphere), or the infinite cell
@@ -99,7 +106,7 @@ class Insertion {
       const std::int32_t c = conflicts_[i];
       for (int k = 0; k < width_; ++k) {
         const std::int32_t n = cells_.neighbors(c)[k];
-        std::uint64_t& m = cells_.mark(n);
+        std::int32_t& m = cells_.mark(n);
         if (m == conflict_mark()) continue;
         if (m != outside_mark()) {
           ++counters_.conflict_tests;
@@ -179,7 +186,7 @@ class Insertion {
   CellPredicates test_;
   int width_;
   IncrementalCounters& counters_;
-  std::uint64_t stamp_ = 0;
+  std::int32_t stamp_ = 0;
   std::int32_t last_ = 0;
   std::size_t finite_cells_ = 1;
   std::vector<std::int32_t> conflicts_;

@@ -7,7 +7,8 @@
 // neighbour k is the cell across the facet opposite vertex k. Invariants: finite cells are
 // positively oriented; an infinite cell becomes positively oriented when a point strictly
 // beyond its hull facet takes kInfinite's place; neighbours are mutual. Removed cells are kept
-// for reuse.
+// for reuse. A cell's vertices, neighbours and mark share one row of the storage (2d + 3
+// ints), so that visiting a cell touches one or two cache lines, not three.
 #pragma once
 
 #include <cstddef>
@@ -21,18 +22,23 @@ class CellComplex {
   static constexpr std::int32_t kInfinite = -1;
   static constexpr std::int32_t kRemoved = -2;  // in a removed cell's first vertex
 
-  explicit CellComplex(int d) : width_(d + 1) {}
+  explicit CellComplex(int d) : width_(d + 1), stride_(2 * (d + 1) + 1) {}
 
   int width() const { return width_; }
-  std::size_t capacity() const { return mark_.size(); }
+  std::size_t capacity() const { return cells_; }
 
-  std::int32_t* vertices(std::int32_t c) { return &vertex_[row(c)]; }
-  const std::int32_t* vertices(std::int32_t c) const { return &vertex_[row(c)]; }
-  std::int32_t* neighbors(std::int32_t c) { return &neighbor_[row(c)]; }
-  const std::int32_t* neighbors(std::int32_t c) const { return &neighbor_[row(c)]; }
-  std::uint64_t& mark(std::int32_t c) { return mark_[static_cast<std::size_t>(c)]; }
+  std::int32_t* vertices(std::int32_t c) { return &data_[row(c)]; }
+  const std::int32_t* vertices(std::int32_t c) const { return &data_[row(c)]; }
+  std::int32_t* neighbors(std::int32_t c) { return &data_[row(c) + static_cast<std::size_t>(width_)]; }
+  const std::int32_t* neighbors(std::int32_t c) const { return &data_[row(c) + static_cast<std::size_t>(width_)]; }
+  // A stamp that the insertion writes (Insertion: conflict, outside, new); 0 in a new cell.
+  std::int32_t& mark(std::int32_t c) { return data_[row(c) + static_cast<std::size_t>(2 * width_)]; }
+  // Sets every cell's mark to 0, before the stamps wrap around.
+  void clear_marks() {
+    for (std::size_t c = 0; c < cells_; ++c) data_[c * static_cast<std::size_t>(stride_) + static_cast<std::size_t>(2 * width_)] = 0;
+  }
 
-  bool removed(std::int32_t c) const { return vertex_[row(c)] == kRemoved; }
+  bool removed(std::int32_t c) const { return data_[row(c)] == kRemoved; }
   // The position of kInfinite among c's vertices, or -1 for a finite cell.
   int infinite_position(std::int32_t c) const {
     const std::int32_t* v = vertices(c);
@@ -66,29 +72,25 @@ class CellComplex {
       free_.pop_back();
       return c;
     }
-    const auto c = static_cast<std::int32_t>(mark_.size());
-    vertex_.resize(vertex_.size() + static_cast<std::size_t>(width_));
-    neighbor_.resize(neighbor_.size() + static_cast<std::size_t>(width_));
-    mark_.push_back(0);
+    const auto c = static_cast<std::int32_t>(cells_++);
+    data_.resize(data_.size() + static_cast<std::size_t>(stride_));
     return c;
   }
   void remove(std::int32_t c) {
-    vertex_[row(c)] = kRemoved;
+    data_[row(c)] = kRemoved;
     free_.push_back(c);
   }
   void reserve(std::size_t cells) {
-    vertex_.reserve(cells * static_cast<std::size_t>(width_));
-    neighbor_.reserve(cells * static_cast<std::size_t>(width_));
-    mark_.reserve(cells);
+    data_.reserve(cells * static_cast<std::size_t>(stride_));
   }
 
  private:
-  std::size_t row(std::int32_t c) const { return static_cast<std::size_t>(c) * static_cast<std::size_t>(width_); }
+  std::size_t row(std::int32_t c) const { return static_cast<std::size_t>(c) * static_cast<std::size_t>(stride_); }
 
   int width_;
-  std::vector<std::int32_t> vertex_;
-  std::vector<std::int32_t> neighbor_;
-  std::vector<std::uint64_t> mark_;  // Insertion's stamps (conflict, outside, new), per insertion
+  int stride_;  // vertices, neighbours, mark
+  std::size_t cells_ = 0;
+  std::vector<std::int32_t> data_;
   std::vector<std::int32_t> free_;
 };
 

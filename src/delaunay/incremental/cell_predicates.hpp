@@ -38,6 +38,10 @@ class CellPredicates {
   int side(std::int32_t c, int k, std::int32_t q) {
     const std::int32_t* v = cells_.vertices(c);
     for (int i = 0; i <= d_; ++i) rows_[static_cast<std::size_t>(i)] = points_.point(i == k ? q : v[i]);
+    if (points_.scaled && d_ <= 3) {
+      const int s = d_ == 2 ? filtered_orientation<2>() : filtered_orientation<3>();
+      if (s != 0) return s;
+    }
     const geometry::Frame frame{d_, d_, nullptr, rows_[0]};
     return geometry::orientation(frame, rows_.data() + 1);
   }
@@ -70,6 +74,29 @@ class CellPredicates {
   }
 
  private:
+  // The orientation of rows_[0..D] in doubles (det[p_1 - p_0; ...; p_D - p_0]), for D = 2 and
+  // 3, and its sign when the forward error bound certifies it, else 0. Only for scaled points.
+  template <int D>
+  int filtered_orientation() const {
+    double a[D][D];
+    const double* base = rows_[0];
+    for (int r = 0; r < D; ++r)
+      for (int c = 0; c < D; ++c) a[r][c] = rows_[static_cast<std::size_t>(r + 1)][c] - base[c];
+    double value = 0.0, tree = 0.0;
+    if constexpr (D == 2) {
+      value = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+      tree = std::fabs(a[0][0] * a[1][1]) + std::fabs(a[0][1] * a[1][0]);
+    } else {
+      const double m0 = a[1][1] * a[2][2] - a[1][2] * a[2][1], n0 = std::fabs(a[1][1] * a[2][2]) + std::fabs(a[1][2] * a[2][1]);
+      const double m1 = a[1][0] * a[2][2] - a[1][2] * a[2][0], n1 = std::fabs(a[1][0] * a[2][2]) + std::fabs(a[1][2] * a[2][0]);
+      const double m2 = a[1][0] * a[2][1] - a[1][1] * a[2][0], n2 = std::fabs(a[1][0] * a[2][1]) + std::fabs(a[1][1] * a[2][0]);
+      value = a[0][0] * m0 - a[0][1] * m1 + a[0][2] * m2;
+      tree = std::fabs(a[0][0]) * n0 + std::fabs(a[0][1]) * n1 + std::fabs(a[0][2]) * n2;
+    }
+    constexpr double gamma = geometry::gamma_bound(geometry::laplace_roundings(D, 1));
+    return geometry::certified_sign_with(value, tree, gamma);
+  }
+
   // The lifted determinant of rows_ (base rows_[0], the others relative to it, the squared
   // distance last: geometry::lifted_sign's matrix) in doubles, for D = 2 and 3, and its sign
   // when the forward error bound certifies it (error_bound.hpp), else 0. Only for scaled

@@ -27,6 +27,24 @@ int round_of(std::int64_t rank) {
   return kRounds - 1 - zeros;
 }
 
+// The kd-tree's leaves in a continuous order: at each node the children are visited in the
+// direction that `reversed` holds for its split axis, and the second child with every other
+// axis reversed, so that it starts next to where the first ended (in 2D, Hilbert's U at each
+// level). Consecutive leaves are then neighbours in space, which the left-first order of the
+// ids is not at every level.
+void leaves_in_snake_order(const spatial::KdTree& tree, std::int32_t node, std::uint32_t reversed,
+                           std::vector<std::int32_t>& leaves) {
+  const spatial::KdTree::Node& n = tree.nodes()[static_cast<std::size_t>(node)];
+  if (n.right < 0) {
+    leaves.push_back(node);
+    return;
+  }
+  const std::uint32_t axis = std::uint32_t{1} << (n.split_axis & 31);
+  const bool right_first = (reversed & axis) != 0;
+  leaves_in_snake_order(tree, right_first ? n.right : node + 1, reversed, leaves);
+  leaves_in_snake_order(tree, right_first ? node + 1 : n.right, reversed ^ ~axis, leaves);
+}
+
 }  // namespace
 
 std::vector<std::int32_t> insertion_order(const PointStore& points) {
@@ -40,7 +58,12 @@ std::vector<std::int32_t> insertion_order(const PointStore& points) {
   }
   for (int r = 0; r < kRounds; ++r) start[static_cast<std::size_t>(r) + 1] += start[static_cast<std::size_t>(r)];
   std::vector<std::int32_t> order(static_cast<std::size_t>(points.size));
-  for (std::int32_t id = 0; id < points.size; ++id) order[start[round[static_cast<std::size_t>(id)]]++] = id;
+  std::vector<std::int32_t> leaves;
+  if (!points.tree.nodes().empty()) leaves_in_snake_order(points.tree, 0, 0, leaves);
+  for (const std::int32_t leaf : leaves) {
+    const spatial::KdTree::Node& n = points.tree.nodes()[static_cast<std::size_t>(leaf)];
+    for (std::int32_t id = n.begin; id < n.end; ++id) order[start[round[static_cast<std::size_t>(id)]]++] = id;
+  }
   return order;
 }
 

@@ -7,8 +7,8 @@
 // about half the size of the next. The expected work of a randomized insertion (Clarkson and
 // Shor) then holds whatever the points' shape: each new point conflicts with O(1) simplices of
 // the triangulation of the rounds before it, in expectation. Within a round the points follow
-// their ids, the kd-tree order, so that consecutive points are near each other and the walk
-// that locates each one is short. The order depends on the coordinates only (ranks and the
+// the kd-tree's leaves along a continuous path, so that consecutive points are near each other
+// and the walk that locates each one is short. The order depends on the coordinates only (ranks and the
 // kd-tree), not on the input order.
 #pragma once
 
