@@ -22,7 +22,7 @@ namespace {
 const std::vector<OptionSpec> kOptions = {
     {"output", 'o', true}, {"format", 0, true},    {"ridges", 0, true}, {"cells", 0, true},
     {"box", 0, true},      {"svg", 0, true},       {"circles", 0, false}, {"no-volumes", 0, false},
-    {"stats", 0, false},   {"variant", 0, true},   {"threads", 0, true}, {"quiet", 'q', false},
+    {"stats", 0, false},   {"variant", 0, true},   {"threads", 0, true}, {"algorithm", 0, true}, {"quiet", 'q', false},
 };
 
 bool needs_cells(OutputFormat format) { return format == OutputFormat::Vtu || format == OutputFormat::Off; }
@@ -44,6 +44,7 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
   const bool quiet = arguments.has("quiet");
   VoronoiOptions options;
   options.delaunay.variant = variant_option(arguments);
+  options.delaunay.algorithm = algorithm_option(arguments);
   options.delaunay.threads = threads_option(arguments);
   options.cell_volumes = !arguments.has("no-volumes");
 
@@ -109,6 +110,8 @@ std::string voronoi_help() {
          "      --no-volumes      skip the volumes of the bounded cells (costly for d >= 6)\n"
          "      --stats           print the run's statistics (key=value) to standard error\n"
          "      --variant NAME    an ablation variant of the Delaunay search, for measurements\n"
+         "                        (see drange delaunay --help)\n"
+         "      --algorithm NAME  the triangulation's construction: auto, direct or incremental\n"
          "                        (see drange delaunay --help)\n"
          "      --threads N       threads for the triangulation and the diagram (default 0: one\n"
          "                        per core); the output is the same for every N\n"

@@ -567,7 +567,7 @@ TEST(DelaunayStatistics, SummaryKeysAreFixed) {
   const std::vector<std::string> expected = {
       "points", "distinct", "simplices", "hull_facets", "calls_per_simplex", "tested_per_simplex",
       "candidates_per_simplex", "exact_fallbacks", "max_open_facets", "shell_spheres", "threads", "wasted_searches",
-      "time_kdtree", "time_first_facet", "time_search", "time_total", "peak_rss"};
+      "time_kdtree", "time_first_facet", "time_search", "time_total", "peak_rss", "algorithm", "time_choice"};
   EXPECT_EQ(keys, expected) << s.summary();
   EXPECT_NE(s.summary().find(" max_open_facets=" + std::to_string(s.debug.max_open_facets) + " "), std::string::npos);
   EXPECT_NE(s.summary().find(" exact_fallbacks=" + std::to_string(s.debug.exact_fallbacks) + " "), std::string::npos);

@@ -69,13 +69,16 @@ struct Statistics {
   std::size_t points = 0;           // input points
   std::size_t distinct_points = 0;  // points after removing exact duplicates
   std::size_t simplices = 0;
-  std::size_t hull_facets = 0;       // facets whose search found nothing: the convex hull
+  std::size_t hull_facets = 0;       // facets of the convex hull (their search found nothing)
   // kd-tree nodes entered by all searches: the paper's "Calls" numerator, kept here for that
-  // reason although, like the debug counters, it depends on the variant and the threads.
+  // reason although, like the debug counters, it depends on the variant and the threads. For
+  // the incremental algorithm: the cells its walks entered.
   std::size_t search_calls = 0;
   std::size_t threads = 1;           // threads used (Options::threads resolved)
+  std::string algorithm;             // the construction that ran: "direct" or "incremental"
   double seconds_kdtree = 0;         // building the kd-tree (including sorting and deduplication)
   double seconds_first_facet = 0;    // gift wrapping to the first facet
+  double seconds_choice = 0;         // Options::algorithm "auto": the probe that chose the algorithm
   double seconds_search = 0;         // the main loop: searches, facet table, simplices and neighbours
   double seconds_total = 0;
   std::size_t peak_rss_bytes = 0;    // process peak resident memory at the end of the run
@@ -83,7 +86,8 @@ struct Statistics {
   // The engine's internal counters, for measuring and debugging the search: what they count
   // follows the implementation and changes with it.
   struct Debug {
-    std::size_t points_tested = 0;    // points inside a query box (or ball), tested against the candidate sphere
+    std::size_t points_tested = 0;    // points inside a query box (or ball), tested against the candidate sphere;
+                                      // for the incremental algorithm, cells tested for conflict
     std::size_t candidates = 0;       // times a search's candidate point was set or improved
     std::size_t exact_fallbacks = 0;  // decisions left to the integer stage (fixed-width or GMP), set-up included
     std::size_t max_open_facets = 0;  // the largest frontier held in the facet table

@@ -11,11 +11,11 @@ griddata over the exact triangulation.
 Every decision is exact (no joggling, no tolerance): integer grids, cospherical points and
 duplicates give one well-defined triangulation, the same for any input order.
 """
-from ._drange import DegenerateInputError, Error, variant_names
+from ._drange import DegenerateInputError, Error, algorithm_names, variant_names
 from ._delaunay import Delaunay
 from ._voronoi import ClippedCells, Voronoi
 from ._check import check_triangulation
 from . import interpolate
 
-__all__ = ["Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error", "DegenerateInputError", "variant_names", "interpolate"]
+__all__ = ["Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error", "DegenerateInputError", "variant_names", "algorithm_names", "interpolate"]
 __version__ = "0.1.0"

@@ -43,6 +43,13 @@ class Delaunay(PointSetAttributes):
         open facets are taken (the paper's FIFO, or the spatial order that "full" uses
         in 3D to 5D), and "scan", "kdtree" and "paper" use FIFO: these number and list
         the simplices in another order. An unknown name raises ValueError.
+    algorithm : str, keyword only
+        The construction: "direct" (the D-Range search of each open facet), "incremental"
+        (randomized insertion, whose speed does not depend on the points' shape) or "auto"
+        (default: the incremental one in 2D and 3D when a probe of the direct search on a
+        sample finds it slow, as on surfaces). All give the same simplices, in another
+        order. A variant other than "full" measures the direct search. An unknown name, or
+        "incremental" with such a variant, raises ValueError.
     progress : callable, keyword only
         Called as progress(simplices_found) every 65536 simplices, and once at the end.
 
@@ -58,7 +65,8 @@ class Delaunay(PointSetAttributes):
         it, and the index of the point it copies.
     statistics : dict
         The run's figures: points, distinct_points, simplices, hull_facets,
-        search_calls, calls_per_simplex, threads, seconds_kdtree, seconds_first_facet,
+        search_calls, calls_per_simplex, threads, algorithm (the construction that ran),
+        seconds_kdtree, seconds_first_facet, seconds_choice,
         seconds_search, seconds_total, peak_rss_bytes; and statistics["debug"], a dict
         of the engine's internal counters (points_tested, candidates, exact_fallbacks,
         max_open_facets, shell_spheres, wasted_searches), whose meaning follows the
@@ -69,12 +77,12 @@ class Delaunay(PointSetAttributes):
     """
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None, *,
-                 threads=0, variant="full", progress=None):
+                 threads=0, variant="full", algorithm="auto", progress=None):
         check_scipy_arguments(furthest_site, incremental, qhull_options)
-        check_options(variant, threads)
+        check_options(variant, threads, algorithm)
         self.points = as_points(points)
-        self._arguments = {"threads": int(threads), "variant": variant}
-        self._core = _drange.triangulate(self.points, variant, int(threads), progress)
+        self._arguments = {"threads": int(threads), "variant": variant, "algorithm": algorithm}
+        self._core = _drange.triangulate(self.points, variant, algorithm, int(threads), progress)
         self._threads = int(threads)
         self.simplices = self._core.simplices
         self.neighbors = self._core.neighbors

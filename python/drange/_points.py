@@ -32,10 +32,13 @@ def check_scipy_arguments(furthest_site, incremental, qhull_options):
     # decision is exact and the output is always simplicial.
 
 
-def check_options(variant, threads):
+def check_options(variant, threads, algorithm="auto"):
     names = _drange.variant_names
     if not isinstance(variant, str):
         raise TypeError(f"variant must be a string, one of {names}; got {type(variant).__name__}")
+    if not isinstance(algorithm, str):
+        raise TypeError(f"algorithm must be a string, one of {_drange.algorithm_names}; "
+                        f"got {type(algorithm).__name__}")
     if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)):
         raise TypeError(f"threads must be an integer; got {type(threads).__name__}")
 

@@ -18,7 +18,7 @@ class Voronoi(PointSetAttributes):
     """Voronoi diagram in N >= 2 dimensions, read off the exact Delaunay triangulation.
 
     Parameters are scipy's (see drange.Delaunay for furthest_site, incremental,
-    qhull_options, threads, variant and progress), plus:
+    qhull_options, threads, variant, algorithm and progress), plus:
 
     cell_volumes : bool, keyword only
         Compute the volume of every bounded cell (default True).
@@ -47,12 +47,12 @@ class Voronoi(PointSetAttributes):
     """
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None, *,
-                 threads=0, variant="full", cell_volumes=True, progress=None):
+                 threads=0, variant="full", algorithm="auto", cell_volumes=True, progress=None):
         check_scipy_arguments(furthest_site, incremental, qhull_options)
-        check_options(variant, threads)
+        check_options(variant, threads, algorithm)
         self.points = as_points(points)
-        self._arguments = {"threads": int(threads), "variant": variant, "cell_volumes": bool(cell_volumes)}
-        self._core = _drange.voronoi(self.points, variant, int(threads), bool(cell_volumes), progress)
+        self._arguments = {"threads": int(threads), "variant": variant, "algorithm": algorithm, "cell_volumes": bool(cell_volumes)}
+        self._core = _drange.voronoi(self.points, variant, algorithm, int(threads), bool(cell_volumes), progress)
         self.vertices = self._core.vertices
         self.ridge_points = self._core.ridge_points
         self.point_region = self._core.point_region

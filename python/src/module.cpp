@@ -32,9 +32,10 @@ PointsView points_view(const Points& points, const char* what) {
   return PointsView(points.data(), static_cast<std::size_t>(points.shape(0)), static_cast<int>(points.shape(1)));
 }
 
-Options engine_options(const std::string& variant, int threads, PythonProgress& progress) {
+Options engine_options(const std::string& variant, const std::string& algorithm, int threads, PythonProgress& progress) {
   Options options;
   options.variant = variant;
+  options.algorithm = algorithm;
   options.threads = threads;
   options.progress = progress.hook();
   return options;
@@ -58,8 +59,10 @@ py::dict statistics_dict(const Statistics& s) {
   d["search_calls"] = s.search_calls;
   d["calls_per_simplex"] = s.calls_per_simplex();
   d["threads"] = s.threads;
+  d["algorithm"] = s.algorithm;
   d["seconds_kdtree"] = s.seconds_kdtree;
   d["seconds_first_facet"] = s.seconds_first_facet;
+  d["seconds_choice"] = s.seconds_choice;
   d["seconds_search"] = s.seconds_search;
   d["seconds_total"] = s.seconds_total;
   d["peak_rss_bytes"] = s.peak_rss_bytes;
@@ -219,21 +222,23 @@ PYBIND11_MODULE(_drange, m) {
         return clipped_dict(cells);
       }, py::arg("lower"), py::arg("upper"));
 
-  m.def("triangulate", [](Points points, const std::string& variant, int threads, py::object progress) {
+  m.def("triangulate", [](Points points, const std::string& variant, const std::string& algorithm, int threads,
+                          py::object progress) {
     const PointsView input = points_view(points, "points");
     PythonProgress reporter(std::move(progress));
-    const Options options = engine_options(variant, threads, reporter);
+    const Options options = engine_options(variant, algorithm, threads, reporter);
     auto triangulated = std::make_unique<Triangulated>();
     triangulated->result = reporter.run([&] { return delaunay(input, options); });
     triangulated->points = std::move(points);
     return triangulated;
-  }, py::arg("points"), py::arg("variant"), py::arg("threads"), py::arg("progress"));
+  }, py::arg("points"), py::arg("variant"), py::arg("algorithm"), py::arg("threads"), py::arg("progress"));
 
-  m.def("voronoi", [](Points points, const std::string& variant, int threads, bool cell_volumes, py::object progress) {
+  m.def("voronoi", [](Points points, const std::string& variant, const std::string& algorithm, int threads,
+                      bool cell_volumes, py::object progress) {
     const PointsView input = points_view(points, "points");
     PythonProgress reporter(std::move(progress));
     VoronoiOptions options;
-    options.delaunay = engine_options(variant, threads, reporter);
+    options.delaunay = engine_options(variant, algorithm, threads, reporter);
     options.cell_volumes = cell_volumes;
     auto diagram = std::make_unique<Diagram>();
     diagram->result = reporter.run([&] {
@@ -243,7 +248,8 @@ PYBIND11_MODULE(_drange, m) {
     });
     diagram->points = std::move(points);
     return diagram;
-  }, py::arg("points"), py::arg("variant"), py::arg("threads"), py::arg("cell_volumes"), py::arg("progress"));
+  }, py::arg("points"), py::arg("variant"), py::arg("algorithm"), py::arg("threads"), py::arg("cell_volumes"),
+     py::arg("progress"));
 
   m.def("default_clip_box", [](Points points, double margin) {
     const Box box = default_clip_box(points_view(points, "points"), margin);
@@ -273,6 +279,7 @@ PYBIND11_MODULE(_drange, m) {
   }, py::arg("points"), py::arg("simplices"), py::arg("max_problems"));
 
   m.attr("variant_names") = variant_names();
+  m.attr("algorithm_names") = algorithm_names();
 }
 
 }  // namespace drange::python

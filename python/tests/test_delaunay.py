@@ -164,6 +164,27 @@ def test_variants_give_the_same_simplices():
         assert set(simplex_keys(drange.Delaunay(points, variant=variant).simplices)) == reference
 
 
+def test_algorithms_give_the_same_simplices():
+    # Points on a cylinder (where "auto" picks the incremental kernel) and uniform points
+    # (where it keeps the direct search): every algorithm, the same simplices and neighbours.
+    rng = np.random.default_rng(4)
+    angle = rng.uniform(0, 2 * np.pi, 6000)
+    cylinder = np.c_[np.cos(angle), np.sin(angle), rng.uniform(-1, 1, 6000)]
+    for points, automatic in ((cylinder, "incremental"), (sample("uniform", 6000, 3, seed=4), "direct")):
+        direct = drange.Delaunay(points, algorithm="direct")
+        reference = set(simplex_keys(direct.simplices))
+        assert direct.statistics["algorithm"] == "direct"
+        for algorithm in ("incremental", "auto"):
+            tri = drange.Delaunay(points, algorithm=algorithm)
+            assert set(simplex_keys(tri.simplices)) == reference
+            assert neighbor_map(tri.simplices, tri.neighbors) == neighbor_map(direct.simplices, direct.neighbors)
+            assert tri.statistics["algorithm"] == (automatic if algorithm == "auto" else algorithm)
+        vor = drange.Voronoi(points, algorithm="incremental")
+        assert vor.statistics["algorithm"] == "incremental"
+        assert len(vor.vertices) == len(drange.Voronoi(points, algorithm="direct").vertices)
+    assert "incremental" in drange.algorithm_names
+
+
 def test_scipy_arguments_are_accepted():
     points = sample("uniform", 100, 2, seed=2)
     tri = drange.Delaunay(points, furthest_site=False, incremental=False, qhull_options="Qt Qbb")

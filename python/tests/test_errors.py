@@ -42,6 +42,9 @@ def test_degenerate_input(cls, points, message):
 @pytest.mark.parametrize("kwargs,error,message", [
     ({"variant": "fast"}, ValueError, "fast"),
     ({"variant": 3}, TypeError, "variant must be a string"),
+    ({"algorithm": "quick"}, ValueError, "quick"),
+    ({"algorithm": 2}, TypeError, "algorithm must be a string"),
+    ({"algorithm": "incremental", "variant": "paper"}, ValueError, "paper"),
     ({"threads": -1}, ValueError, "threads must be 0"),
     ({"threads": "2"}, TypeError, "threads must be an integer"),
     ({"threads": True}, TypeError, "threads must be an integer"),

@@ -24,6 +24,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "delaunay/algorithm_choice.hpp"
 #include "delaunay/derived_facets.hpp"
 #include "delaunay/facet_queue.hpp"
 #include "delaunay/facet_search.hpp"
@@ -199,7 +200,7 @@ void search(Frontier<Queue>& frontier, const engine::FirstFacet& first, const en
 }  // namespace
 
 Triangulation engine::triangulate(PointsView input, const Options& options, const SearchOptions& search_options,
-                                  bool incremental) {
+                                  Algorithm algorithm) {
   const auto start = Clock::now();
   const std::uint64_t exact_before = geometry::exact_evaluations();
   Triangulation result;
@@ -230,6 +231,12 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
   stats.seconds_first_facet = seconds_since(phase);
   // Exact evaluations before the search, on every thread.
   const std::uint64_t exact_setup = geometry::exact_evaluations() - exact_before + team.helper_exact_evaluations();
+
+  phase = Clock::now();
+  const bool incremental = algorithm == Algorithm::incremental ||
+                           (algorithm == Algorithm::automatic && engine::prefer_incremental(points));
+  stats.algorithm = incremental ? "incremental" : "direct";
+  stats.seconds_choice = seconds_since(phase);
 
   phase = Clock::now();
   std::vector<std::int32_t>& simplices = result.simplices;
@@ -274,12 +281,12 @@ Triangulation delaunay(PointsView input, const Options& options) {
   const bool variant = options.variant != "full";
   if (options.algorithm == "incremental" && variant)
     throw UsageError("the variant '" + options.variant + "' measures the direct algorithm; it cannot be combined with algorithm 'incremental'");
-  bool incremental = false;
-  if (options.algorithm == "incremental") incremental = true;
-  else if (options.algorithm == "auto") incremental = false;
+  engine::Algorithm algorithm = engine::Algorithm::direct;
+  if (options.algorithm == "incremental") algorithm = engine::Algorithm::incremental;
+  else if (options.algorithm == "auto") algorithm = variant ? engine::Algorithm::direct : engine::Algorithm::automatic;
   else if (options.algorithm != "direct")
     throw UsageError("unknown algorithm '" + options.algorithm + "' (expected one of: " + algorithm_names() + ")");
-  return engine::triangulate(input, options, search_options, incremental);
+  return engine::triangulate(input, options, search_options, algorithm);
 }
 
 }  // namespace drange

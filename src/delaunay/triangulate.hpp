@@ -1,8 +1,8 @@
 // delaunay/triangulate.hpp: the driver behind drange::delaunay, with the search's switches
 // given directly instead of by Options::variant (which it ignores): the tests set single
-// switches, and combinations that no named variant has, with it. `incremental`: the
-// incremental kernel (delaunay/incremental/) instead of the direct search, which `search` then
-// does not concern (Options::algorithm, which it ignores too, resolved).
+// switches, and combinations that no named variant has, with it; and Options::algorithm, which
+// it ignores too, given as `algorithm` (the incremental kernel, delaunay/incremental/, does not
+// read `search`).
 #pragma once
 
 #include "delaunay/search_options.hpp"
@@ -11,6 +11,9 @@
 
 namespace drange::engine {
 
-Triangulation triangulate(PointsView points, const Options& options, const SearchOptions& search, bool incremental = false);
+enum class Algorithm { automatic, direct, incremental };
+
+Triangulation triangulate(PointsView points, const Options& options, const SearchOptions& search,
+                          Algorithm algorithm = Algorithm::direct);
 
 }  // namespace drange::engine
