@@ -15,6 +15,8 @@ import subprocess
 import sys
 import time
 
+import degenerate_families  # bench/, this script's directory
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
@@ -65,6 +67,11 @@ DEGENERATE = [("family:" + name, n, d) for name, n, d in [
     ("decimal_grid3", 19683, 3), ("decimal_grid2", 20000, 2), ("rounded3", 20000, 3),
     ("rounded3_dense", 100000, 3), ("rounded4", 20000, 4), ("decimal_grid4", 10000, 4), ("decimal_grid5", 3125, 5),
     ("decimal_grid6", 729, 6), ("decimal_grid7", 1458, 7)]]
+# And the surface families of issue 44 (boundaries of a square and a cube within 1e-10, the
+# vertices of meshes, a freeform patch, a torus in R^4) at their default sizes, and cube_faces3
+# at ten times its size too, named NAME_N.
+DEGENERATE += [("family:" + degenerate_families.surface_file_name(name, n), n, degenerate_families.SURFACES[name][0])
+               for name, n in degenerate_families.DEFAULT_SURFACE_ROWS + [("cube_faces3", 200000)]]
 DEGENERATE_PEERS = {2: ["cgal2", "qhull"], 3: ["cgal3", "qhull"], 4: ["cgal-dd", "qhull"], 5: ["cgal-dd", "qhull"],
                     6: ["cgal-dd", "qhull"], 7: ["cgal-dd", "qhull"]}
 QUICK = [("uniform", 100000, 2), ("grid", 90000, 2), ("uniform", 100000, 3), ("uniform", 10000, 4), ("uniform", 3000, 5)]
@@ -100,7 +107,12 @@ def input_file(build, data, dist, n, d):
         path = os.path.join(families, dist[len("family:"):] + ".txt")
         if not os.path.exists(path):
             script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "degenerate_families.py")
-            subprocess.run([sys.executable, script, families], check=True, stdout=subprocess.DEVNULL)
+            # A surface file alone (NAME_N); any other family with all the probe families, as
+            # they share one random generator.
+            name, _, size = dist[len("family:"):].rpartition("_")
+            only = ["--surfaces-only", "--families", name, "--sizes", size] \
+                if name in degenerate_families.SURFACES and size.isdigit() else []
+            subprocess.run([sys.executable, script, families] + only, check=True, stdout=subprocess.DEVNULL)
         return path
     path = os.path.join(data, f"{dist}_{d}d_{n}.txt")
     if not os.path.exists(path):
@@ -164,7 +176,7 @@ def selected_rows(rows, spec):
     chosen = []
     for item in spec.split(","):
         try:
-            dist, d, n = item.split(":")
+            dist, d, n = item.rsplit(":", 2)  # a family's DIST has a colon of its own
             row = (dist, int(n), int(d))
         except ValueError:
             sys.exit(f"bench/run.py: --rows: '{item}' is not DIST:D:N (e.g. uniform:5:20000)")
@@ -248,7 +260,8 @@ def main():
     ap.add_argument("--beyond", action="store_true",
                     help="the 7D and 8D rows where the peers take over 10 minutes (about 70 min)")
     ap.add_argument("--degenerate", action="store_true",
-                    help="the probe inputs of bench/degenerate_families.py against CGAL and Qhull (about 11 min)")
+                    help="the probe and surface inputs of bench/degenerate_families.py against CGAL and Qhull "
+                         "(about 18 min)")
     ap.add_argument("--no-ablation", action="store_true")
     ap.add_argument("--repeat", type=int, default=1,
                     help="run each measurement N times and report the median (odd N: the middle run)")

@@ -15,12 +15,14 @@
 #   --beyond     7D 4 500 and 9 000 points, 8D 1 500 and 2 000, 600 s limit (about 70 min)
 #                                                           -> bench/results-beyond.md
 #   --degenerate the probe inputs of bench/degenerate_families.py (concentric spheres, bubbles,
-#                rings, smooth surfaces, a terrain's plateau, decimal grids) against CGAL and Qhull (about 11 min)
+#                rings, smooth surfaces, a terrain's plateau, decimal grids) and its surface families
+#                (a cube's faces, mesh vertices, a freeform patch) against CGAL and Qhull (about 18 min)
 #                                                           -> bench/results-degenerate.md
 #   --micro      also run the Google Benchmark microbenchmarks (appended to the file)
 #   --repeat N   each measurement N times, the median reported (the machine's noise: one run
 #                of a cell moved by up to 8% between two runs of the set)
-#   --rows ...   only these rows of the set, no ablation (e.g. --rows uniform:5:20000,uniform:6:5000)
+#   --rows ...   only these rows of the set, no ablation (e.g. --rows uniform:5:20000,uniform:6:5000,
+#                or --degenerate --rows family:cube_faces3_20000:3:20000)
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -37,7 +39,7 @@ while [ $# -gt 0 ]; do
     --repeat) extra+=(--repeat "$2"); shift ;;
     --rows) extra+=(--rows "$2"); shift ;;
     -o) output="$2"; shift ;;
-    -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
