@@ -13,12 +13,15 @@
 namespace drange::engine {
 namespace {
 
-// The sample: at most this many points, and at most one in kSampleShare of them, so that the
-// probe stays a small part of the run.
-constexpr std::size_t kSampleSize = 4096;
+// The sample: one point in kSampleShare, from kSmallestSample to kLargestSample points. Below
+// kSmallestSample the kd-tree has too few leaves (64 points each in 2D, 128 in 3D) for the
+// search's work to show the input's shape; above kLargestSample the probe would only cost more.
+constexpr std::size_t kSmallestSample = 2048;
+constexpr std::size_t kLargestSample = 4096;
 constexpr std::size_t kSampleShare = 8;
-// Below this many points either construction takes milliseconds: no probe, the direct search.
-constexpr std::size_t kSmallestProbed = 4096;
+// Below this many points (the sample would be more than a quarter of them) the direct search
+// runs without a probe.
+constexpr std::size_t kSmallestProbed = 4 * kSmallestSample;
 
 // Twice the work per simplex (kd-tree nodes entered plus points tested) of the direct search
 // on 4096 uniform points in 2D and 3D (4.5 and 6.7).
@@ -30,7 +33,7 @@ bool prefer_incremental(const PointStore& points) {
   const int d = points.dim;
   const auto n = static_cast<std::size_t>(points.size);
   if (d > 3 || n < kSmallestProbed) return false;
-  const std::size_t m = std::min(kSampleSize, n / kSampleShare);
+  const std::size_t m = std::clamp(n / kSampleShare, kSmallestSample, kLargestSample);
   // The coarsest rounds of the insertion order: a random sample drawn from the ranks.
   const std::vector<std::int32_t> order = insertion_order(points);
   std::vector<double> coords;
