@@ -24,7 +24,10 @@
 # status and standard error are compared too, and a run that fails counts as a difference.
 #
 # Prints one line per input and thread count (`same` or `DIFFERENT: FILE...`), then a summary;
-# exits 1 on any difference, 2 on a usage error. The first differing pair of outputs is kept in
+# exits 1 on any difference, 2 on a usage error. Where the simplices differ as bytes but not as a
+# set (sorted vertex ids, sorted rows: another --algorithm lists them in another order), the
+# line says `same set, other order: FILE...` instead and does not count as a difference; the
+# neighbours and the Voronoi diagram then differ in their numbering only if their simplices do. The first differing pair of outputs is kept in
 # $SAME_OUTPUT_DATA/first-difference. Runs take scripts/ab_time.sh's lock (/tmp/drange-machine.lock):
 # the two 1-thread runs share it and run side by side, a 2-thread run holds it alone.
 #
@@ -107,7 +110,9 @@ locked() { local mode=$1; shift; ( flock "$mode" 9 && "$@" ) 9>>"$lock"; }
 work=$(mktemp -d "$data/run.XXXXXX") || exit 2
 trap 'rm -rf "$work"' EXIT
 rm -rf "$data/first-difference"
-same=0 different=0 started=$SECONDS
+same=0 same_set=0 different=0 started=$SECONDS
+# The simplices of a qhull-layout file as a set: each row's ids sorted, the rows sorted.
+simplex_set() { tail -n +2 "$1" | /usr/bin/python3 -c 'import sys; print("\n".join(sorted(" ".join(sorted(l.split(), key=int)) for l in sys.stdin)))'; }
 # compare LABEL: the outputs in $work/a and $work/b, one line of verdict.
 compare() {
   local differ="" file
@@ -117,6 +122,9 @@ compare() {
   if grep -q "exit [^0]" "$work/a/status" "$work/b/status"; then differ+=" (a run failed: see status)"; fi
   if [ -z "$differ" ]; then
     echo "${1}same"; same=$((same + 1))
+  elif [[ "$differ" == *simplices.txt* && "$differ" != *status* ]] &&
+       cmp -s <(simplex_set "$work/a/simplices.txt") <(simplex_set "$work/b/simplices.txt"); then
+    echo "${1}same set, other order:$differ"; same_set=$((same_set + 1))
   else
     echo "${1}DIFFERENT:$differ"; different=$((different + 1))
     if [ ! -e "$data/first-difference" ]; then mv "$work" "$data/first-difference"; mkdir "$work"; fi
@@ -146,5 +154,5 @@ for input in "${inputs[@]}"; do
     done
   fi
 done
-echo "same_output.sh: $same same, $different different ($(( (SECONDS - started) / 60 )) min $(( (SECONDS - started) % 60 )) s)"
+echo "same_output.sh: $same same, $same_set same set in another order, $different different ($(( (SECONDS - started) / 60 )) min $(( (SECONDS - started) % 60 )) s)"
 [ $different -eq 0 ]
