@@ -95,6 +95,7 @@ struct Statistics {
                                       // variant without the shell, which is then not fitted)
     std::size_t wasted_searches = 0;  // searches run ahead by a thread for a facet closed before its turn; not
                                       // counted in search_calls, points_tested, candidates, exact_fallbacks
+    std::size_t unfiltered_tests = 0; // incremental algorithm: signs its fast filters left to the exact stages
   } debug;
 
   // Search calls per simplex, the paper's "Calls" column of Table 1.

@@ -51,6 +51,7 @@ py::dict statistics_dict(const Statistics& s) {
   debug["max_open_facets"] = s.debug.max_open_facets;
   debug["shell_spheres"] = s.debug.shell_spheres;
   debug["wasted_searches"] = s.debug.wasted_searches;
+  debug["unfiltered_tests"] = s.debug.unfiltered_tests;
   py::dict d;
   d["points"] = s.points;
   d["distinct_points"] = s.distinct_points;

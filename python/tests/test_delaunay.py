@@ -168,8 +168,8 @@ def test_algorithms_give_the_same_simplices():
     # Points on a cylinder (where "auto" picks the incremental kernel) and uniform points
     # (where it keeps the direct search): every algorithm, the same simplices and neighbours.
     rng = np.random.default_rng(4)
-    angle = rng.uniform(0, 2 * np.pi, 6000)
-    cylinder = np.c_[np.cos(angle), np.sin(angle), rng.uniform(-1, 1, 6000)]
+    angle = rng.uniform(0, 2 * np.pi, 10000)
+    cylinder = np.c_[np.cos(angle), np.sin(angle), rng.uniform(-1, 1, 10000)]
     for points, automatic in ((cylinder, "incremental"), (sample("uniform", 6000, 3, seed=4), "direct")):
         direct = drange.Delaunay(points, algorithm="direct")
         reference = set(simplex_keys(direct.simplices))

@@ -246,6 +246,7 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
         engine::triangulate_incrementally(points, first, result, options.compute_neighbors, options.progress);
     totals.counters.calls = counters.walk_steps;
     totals.counters.points_tested = counters.conflict_tests;
+    stats.debug.unfiltered_tests = counters.unfiltered_tests;
   } else if (spatial_order(search_options.facet_order, d)) {
     Frontier<engine::SpatialFacetQueue> frontier(d, points.size, result, options.progress,
                                                  engine::SpatialFacetQueue(d, points.size, kSpatialBlockShift),

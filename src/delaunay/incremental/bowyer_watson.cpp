@@ -64,6 +64,7 @@ class Insertion {
   }
 
   CellComplex& cells() { return cells_; }
+  std::uint64_t unfiltered_tests() const { return test_.unfiltered(); }
   // Finite cells in the triangulation now.
   std::size_t finite_cells() const { return finite_cells_; }
 
@@ -233,6 +234,7 @@ IncrementalCounters triangulate_incrementally(const PointStore& points, const Fi
       next_report += kProgressInterval;
     }
   }
+  counters.unfiltered_tests = insertion.unfiltered_tests();
   // The finite cells, numbered in the order of their rows.
   CellComplex& cells = insertion.cells();
   const int width = cells.width();

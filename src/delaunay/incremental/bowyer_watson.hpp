@@ -24,6 +24,7 @@ struct IncrementalCounters {
   std::uint64_t walk_steps = 0;      // cells the walks entered
   std::uint64_t conflict_tests = 0;  // cells tested for conflict
   std::uint64_t cells_created = 0;
+  std::uint64_t unfiltered_tests = 0;  // orientations and conflict tests the fast filters left undecided
 };
 
 // Fills result.simplices (positively oriented, in `points`' ids), result.neighbors (when

@@ -42,6 +42,7 @@ class CellPredicates {
       const int s = d_ == 2 ? filtered_orientation<2>() : filtered_orientation<3>();
       if (s != 0) return s;
     }
+    ++unfiltered_;
     const geometry::Frame frame{d_, d_, nullptr, rows_[0]};
     return geometry::orientation(frame, rows_.data() + 1);
   }
@@ -69,9 +70,14 @@ class CellPredicates {
       const int s = d_ == 2 ? filtered_lifted_sign<2>() : filtered_lifted_sign<3>();
       if (s != 0) return s < 0;
     }
+    ++unfiltered_;
     const geometry::Frame frame{d_, d_, nullptr, rows_[0]};
     return geometry::lifted_sign_perturbed(frame, rows_.data() + 1, ranks_.data()) < 0;
   }
+
+  // Tests that the fast filters did not decide (or that had none: d > 3, unscaled points),
+  // left to the generic predicates' stages.
+  std::uint64_t unfiltered() const { return unfiltered_; }
 
  private:
   // The orientation of rows_[0..D] in doubles (det[p_1 - p_0; ...; p_D - p_0]), for D = 2 and
@@ -141,6 +147,7 @@ class CellPredicates {
   int d_;
   std::vector<const double*> rows_;
   std::vector<std::int64_t> ranks_;
+  std::uint64_t unfiltered_ = 0;
 };
 
 }  // namespace drange::engine
