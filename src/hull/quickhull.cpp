@@ -85,10 +85,10 @@ void Quickhull::set_normal(std::int32_t f) {
   compute_normal(vertices(f), normal_.data() + base, normal_abs_.data() + base);
 }
 
-int Quickhull::tuple_side(const std::int32_t* v, const double* a, const double* a_abs, std::int32_t x, double& height,
-                          bool& on_plane) {
+int Quickhull::tuple_side(const std::int32_t* v, const double* a, const double* a_abs, std::int32_t x, const double* px,
+                          double& height, bool& on_plane) {
   on_plane = false;
-  const int s = filter(point(v[0]), a, a_abs, x, height);
+  const int s = filter(point(v[0]), a, a_abs, px, height);
   if (s != 0) return s;
   std::copy(v, v + d_, ids_.begin());
   ids_[static_cast<std::size_t>(d_)] = x;
@@ -97,36 +97,37 @@ int Quickhull::tuple_side(const std::int32_t* v, const double* a, const double* 
   return perturbation_.sign(ids_.data(), unperturbed);
 }
 
-int Quickhull::side(std::int32_t f, std::int32_t x, double& height, bool& on_plane) {
+int Quickhull::side(std::int32_t f, std::int32_t x, const double* px, double& height, bool& on_plane) {
   const std::size_t base = static_cast<std::size_t>(f) * static_cast<std::size_t>(d_);
-  return tuple_side(vertices(f), normal_.data() + base, normal_abs_.data() + base, x, height, on_plane);
+  return tuple_side(vertices(f), normal_.data() + base, normal_abs_.data() + base, x, px, height, on_plane);
 }
 
 bool Quickhull::on_plane(std::int32_t f, std::int32_t x) {
   const std::size_t base = static_cast<std::size_t>(f) * static_cast<std::size_t>(d_);
   double height = 0.0;
-  if (filter(point(vertices(f)[0]), normal_.data() + base, normal_abs_.data() + base, x, height) != 0) return false;
+  if (filter(point(vertices(f)[0]), normal_.data() + base, normal_abs_.data() + base, point(x), height) != 0) return false;
   std::copy(vertices(f), vertices(f) + d_, ids_.begin());
   ids_[static_cast<std::size_t>(d_)] = x;
   return perturbation_.unperturbed(ids_.data()) == 0;
 }
 
-void Quickhull::add_outside(std::int32_t f, std::int32_t x, double height) {
+void Quickhull::add_outside(std::int32_t f, std::int32_t x, const double* px, double height) {
   Sets& sets = sets_[static_cast<std::size_t>(f)];
   sets.outside.push_back(x);
+  sets.outside.insert(sets.outside.end(), px, px + d_);
   if (sets.farthest < 0 || height > sets.height) {
     sets.farthest = x;
     sets.height = height;
   }
 }
 
-void Quickhull::assign(std::int32_t x, const std::vector<std::int32_t>& facets) {
+void Quickhull::assign(std::int32_t x, const double* px, const std::vector<std::int32_t>& facets) {
   std::int32_t holds = -1;
   for (const std::int32_t f : facets) {
     double height = 0.0;
     bool on = false;
-    if (side(f, x, height, on) > 0) {
-      add_outside(f, x, height);
+    if (side(f, x, px, height, on) > 0) {
+      add_outside(f, x, px, height);
       return;
     }
     if (on && holds < 0) holds = f;
@@ -172,13 +173,15 @@ HullFacets Quickhull::run() {
   std::vector<char> in_simplex(static_cast<std::size_t>(n_), 0);
   for (const std::int32_t id : s) in_simplex[static_cast<std::size_t>(id)] = 1;
   for (std::int32_t x = 0; x < n_; ++x)
-    if (!in_simplex[static_cast<std::size_t>(x)]) assign(x, first);
+    if (!in_simplex[static_cast<std::size_t>(x)]) assign(x, point(x), first);
   for (const std::int32_t f : first)
     if (!sets_[static_cast<std::size_t>(f)].outside.empty()) pending_.push_back(f);
 
-  while (!pending_.empty()) {
-    const std::int32_t f = pending_.back();
-    pending_.pop_back();
+  // Oldest first: the first simplex's large outside sets are split by their farthest points
+  // before the new facets' smaller ones (a run over a 3D ball took a fifth less time than
+  // newest first).
+  for (std::size_t next = 0; next < pending_.size(); ++next) {
+    const std::int32_t f = pending_[next];
     const Sets& sets = sets_[static_cast<std::size_t>(f)];
     if (sets.alive && !sets.outside.empty()) add_point(f);
   }
@@ -220,7 +223,7 @@ void Quickhull::add_point(std::int32_t start) {
       if (seen_[static_cast<std::size_t>(g)] == round_) continue;
       double height = 0.0;
       bool on = false;
-      const bool sees = side(g, p, height, on) > 0;
+      const bool sees = side(g, p, point(p), height, on) > 0;
       seen_[static_cast<std::size_t>(g)] = round_;
       visible_[static_cast<std::size_t>(g)] = sees;
       if (sees) {
@@ -267,8 +270,12 @@ void Quickhull::add_point(std::int32_t start) {
     const std::int32_t f = visible[i];
     // The walks add to the new facets' sets only: `sets` stays in place while it is read.
     const Sets& sets = sets_[static_cast<std::size_t>(f)];
-    for (const std::int32_t x : sets.outside)
-      if (x != p && !walk(x, static_cast<std::int32_t>(i), p)) assign(x, created_);
+    const std::size_t stride = static_cast<std::size_t>(d) + 1;
+    for (std::size_t o = 0; o < sets.outside.size(); o += stride) {
+      const auto x = static_cast<std::int32_t>(sets.outside[o]);
+      const double* px = sets.outside.data() + o + 1;
+      if (x != p && !walk(x, px, static_cast<std::int32_t>(i), p)) assign(x, px, created_);
+    }
     for (const std::int32_t x : sets.coplanar) keep_if_on_boundary(x, created_);
     if (apex_on_plane)
       for (int k = 0; k < d; ++k) {
@@ -299,7 +306,7 @@ void Quickhull::index_horizon() {
     horizon_[static_cast<std::size_t>(creator_[c]) * static_cast<std::size_t>(d) + static_cast<std::size_t>(apex_place_[c])] = created_[c];
 }
 
-bool Quickhull::walk(std::int32_t x, std::int32_t from, std::int32_t p) {
+bool Quickhull::walk(std::int32_t x, const double* px, std::int32_t from, std::int32_t p) {
   const int d = d_;
   std::int32_t i = from;
   int entered_by = -1;  // the place, in facet i, of the ridge the walk came across
@@ -344,7 +351,7 @@ bool Quickhull::walk(std::int32_t x, std::int32_t from, std::int32_t p) {
       // point, where the perturbation is undefined. A tie ends the walk: the scan decides, and
       // sees coplanarity.
       double height = 0.0;
-      int s = filter(point(k == 0 ? p : vertices(g)[0]), a, a_abs, x, height);
+      int s = filter(point(k == 0 ? p : vertices(g)[0]), a, a_abs, px, height);
       if (s == 0) {
         build_tuple();
         std::copy(tuple_.begin(), tuple_.end(), ids_.begin());
@@ -360,7 +367,7 @@ bool Quickhull::walk(std::int32_t x, std::int32_t from, std::int32_t p) {
     if (across < 0) return true;  // in the pyramid from p over g: inside the new hull
     const std::size_t ridge = static_cast<std::size_t>(i) * static_cast<std::size_t>(d) + static_cast<std::size_t>(across);
     if (horizon_[ridge] >= 0) {
-      add_outside(horizon_[ridge], x, across_height);
+      add_outside(horizon_[ridge], x, px, across_height);
       return true;
     }
     const std::int32_t next = neighbors(g)[across];

@@ -45,7 +45,10 @@ class Quickhull {
 
  private:
   struct Sets {
-    std::vector<std::int32_t> outside;   // undecided points above the facet
+    // Undecided points above the facet, d+1 doubles each: the id, then a copy of the
+    // coordinates, so that the passes over a dead facet's points read memory in order (reading
+    // them by id was most of a run's cache misses).
+    std::vector<double> outside;
     std::vector<std::int32_t> coplanar;  // decided points on the facet's hyperplane
     std::int32_t farthest = -1;
     double height = 0.0;
@@ -63,8 +66,7 @@ class Quickhull {
   void set_row(int r, const double* row);  // row r of minors_
   // The filter's certified sign of O(x) = a . (x - v0) (0: undecided); `height` gets its
   // value. The construction's innermost loop: inline, of fixed length in 2D to 6D.
-  int filter(const double* v0, const double* a, const double* a_abs, std::int32_t x, double& height) const {
-    const double* p = point(x);
+  int filter(const double* v0, const double* a, const double* a_abs, const double* p, double& height) const {
     double value = 0.0, abs_tree = 0.0;
     switch (d_) {
       case 2: dot<2>(v0, a, a_abs, p, value, abs_tree); break;
@@ -92,13 +94,16 @@ class Quickhull {
   }
   // The perturbed sign of O(x) for the ids v, never 0; `height` gets the filter's value, and
   // `on_plane` whether x is exactly on their hyperplane.
-  int tuple_side(const std::int32_t* v, const double* a, const double* a_abs, std::int32_t x, double& height, bool& on_plane);
-  int side(std::int32_t f, std::int32_t x, double& height, bool& on_plane);  // tuple_side for facet f (+1 outside)
+  // x's coordinates are at px.
+  int tuple_side(const std::int32_t* v, const double* a, const double* a_abs, std::int32_t x, const double* px, double& height,
+                 bool& on_plane);
+  // tuple_side for facet f (+1 outside)
+  int side(std::int32_t f, std::int32_t x, const double* px, double& height, bool& on_plane);
   bool on_plane(std::int32_t f, std::int32_t x);  // unperturbed O(x) == 0, exactly
-  void add_outside(std::int32_t f, std::int32_t x, double height);
+  void add_outside(std::int32_t f, std::int32_t x, const double* px, double height);
   // Puts x in the outside set of the first of `facets` it lies above; else in the coplanar
   // set of the first whose hyperplane holds it; else nowhere (strictly inside).
-  void assign(std::int32_t x, const std::vector<std::int32_t>& facets);
+  void assign(std::int32_t x, const double* px, const std::vector<std::int32_t>& facets);
   void keep_if_on_boundary(std::int32_t x, const std::vector<std::int32_t>& facets);
   void add_point(std::int32_t facet);
   // Places an outside point x of the dead facet `from` (an index into visible_facets_) without
@@ -115,7 +120,7 @@ class Quickhull {
   // where an inner ridge's hyperplane may pass through the interior point), it returns false
   // and the scan over the new facets decides.
   void index_horizon();  // walk_index_ and horizon_ for this round
-  bool walk(std::int32_t x, std::int32_t from, std::int32_t p);
+  bool walk(std::int32_t x, const double* px, std::int32_t from, std::int32_t p);
   void link_new_facets();  // the neighbours of created_ across the ridges through the apex
 
   const double* coords_;
@@ -132,7 +137,7 @@ class Quickhull {
   std::vector<double> normal_, normal_abs_;  // O(x) = normal . (x - v0), and its absolute tree
   std::vector<Sets> sets_;
   std::vector<std::int32_t> free_;
-  std::vector<std::int32_t> pending_;  // facets that may have outside points
+  std::vector<std::int32_t> pending_;  // facets that may have outside points, in the order made
 
   // add_point's marks and scratch, kept across its calls.
   std::uint32_t round_ = 0;
