@@ -16,6 +16,7 @@
 
 #include "drange/errors.hpp"
 #include "drange/hull.hpp"
+#include "hull/initial_simplex.hpp"
 #include "hull/perturbation.hpp"
 #include "oracle.hpp"
 
@@ -242,7 +243,7 @@ TEST(ConvexHull, BadInputIsRefusedWithItsReason) {
 // keep every nonzero term of det[q_i, t_i] = det[q, 1] - eps det[q, w] - sum eta_i cof_i
 // within factors far smaller than the gaps between these powers: the signs are the
 // infinitesimal ones.
-int defined_sign(const PointCloud& points, const std::vector<std::int32_t>& ids, const std::vector<double>& o,
+int defined_sign(const PointCloud& points, const std::vector<std::int32_t>& ids, const std::vector<mpq_class>& o,
                  const hull::Perturbation& perturbation) {
   const int d = points.dim;
   std::vector<std::int32_t> by_rank = ids;
@@ -253,7 +254,7 @@ int defined_sign(const PointCloud& points, const std::vector<std::int32_t>& ids,
     mpq_class w = 0;
     std::vector<mpq_class> q(static_cast<std::size_t>(d));
     for (int k = 0; k < d; ++k) {
-      q[static_cast<std::size_t>(k)] = mpq_class(points.point(static_cast<std::size_t>(id))[k]) - mpq_class(o[static_cast<std::size_t>(k)]);
+      q[static_cast<std::size_t>(k)] = mpq_class(points.point(static_cast<std::size_t>(id))[k]) - o[static_cast<std::size_t>(k)];
       w += q[static_cast<std::size_t>(k)] * q[static_cast<std::size_t>(k)];
     }
     const auto rank = std::find(by_rank.begin(), by_rank.end(), id) - by_rank.begin();
@@ -274,36 +275,77 @@ int defined_sign(const PointCloud& points, const std::vector<std::int32_t>& ids,
   return sgn(test::reference_determinant(rows, d));
 }
 
+// Random (d+1)-tuples of `points`, many of them degenerate, against the definition, with O at
+// `o` (exactly; `perturbation` must use the same point).
+void expect_stages_match(const PointCloud& points, const std::vector<mpq_class>& o, const hull::Perturbation& perturbation) {
+  const int d = points.dim;
+  const auto n = static_cast<std::int64_t>(points.size());
+  test::TestRandom random(17);
+  int ties = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<std::int32_t> ids;
+    while (static_cast<int>(ids.size()) <= d) {
+      const auto id = static_cast<std::int32_t>(random.integer(0, n - 1));
+      if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
+    }
+    // Skip d+1 points in one hyperplane through O: there the perturbation is undefined.
+    bool through_o = true;
+    for (int i = 0; i <= d && through_o; ++i) {
+      std::vector<mpq_class> rows;
+      for (int k = 0; k <= d; ++k)
+        if (k != i)
+          for (int j = 0; j < d; ++j)
+            rows.push_back(mpq_class(points.point(static_cast<std::size_t>(ids[static_cast<std::size_t>(k)]))[j]) -
+                           o[static_cast<std::size_t>(j)]);
+      through_o = test::reference_determinant(rows, d) == 0;
+    }
+    if (through_o) continue;
+    const int unperturbed = perturbation.unperturbed(ids.data());
+    ties += unperturbed == 0;
+    EXPECT_EQ(perturbation.sign(ids.data(), unperturbed), defined_sign(points, ids, o, perturbation)) << "trial " << trial;
+  }
+  EXPECT_GT(ties, 40);  // the stages after the first were exercised
+}
+
 TEST(ConvexHull, PerturbationStagesMatchTheirDefinition) {
   // Integer points in a small box: many d+1 on one hyperplane, on one sphere, or repeated.
   for (int d = 2; d <= 4; ++d) {
     SCOPED_TRACE("d=" + std::to_string(d));
     const PointCloud points = test::random_integer_points(30, d, 0, 2, 5 + static_cast<std::uint64_t>(d));
-    const std::vector<double> o(static_cast<std::size_t>(d), 0.8125);  // off every hyperplane the points span
-    const hull::Perturbation perturbation(points.coords.data(), d, o);
-    test::TestRandom random(17);
-    int ties = 0;
-    for (int trial = 0; trial < 400; ++trial) {
-      std::vector<std::int32_t> ids;
-      while (static_cast<int>(ids.size()) <= d) {
-        const auto id = static_cast<std::int32_t>(random.integer(0, 29));
-        if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
-      }
-      // Skip d+1 points in one hyperplane through O: there the perturbation is undefined.
-      bool through_o = true;
-      for (int i = 0; i <= d && through_o; ++i) {
-        std::vector<const double*> others{o.data()};
-        for (int k = 0; k <= d; ++k)
-          if (k != i) others.push_back(points.point(static_cast<std::size_t>(ids[static_cast<std::size_t>(k)])));
-        through_o = reference_orientation(d, others) == 0;
-      }
-      if (through_o) continue;
-      const int unperturbed = perturbation.unperturbed(ids.data());
-      ties += unperturbed == 0;
-      EXPECT_EQ(perturbation.sign(ids.data(), unperturbed), defined_sign(points, ids, o, perturbation)) << "trial " << trial;
+    // About a double (off every hyperplane the points span), as when the centroid rounds inside.
+    const std::vector<double> o(static_cast<std::size_t>(d), 0.8125);
+    expect_stages_match(points, std::vector<mpq_class>(o.begin(), o.end()), hull::Perturbation(points.coords.data(), d, {}, o));
+    // About the exact centroid of a simplex, in integers, as when it does not round inside.
+    std::vector<std::int32_t> simplex;
+    test::TestRandom pick(3);
+    while (static_cast<int>(simplex.size()) <= d || reference_orientation(d, corners(points, simplex)) == 0) {
+      if (static_cast<int>(simplex.size()) > d) simplex.clear();
+      const auto id = static_cast<std::int32_t>(pick.integer(0, 29));
+      if (std::find(simplex.begin(), simplex.end(), id) == simplex.end()) simplex.push_back(id);
     }
-    EXPECT_GT(ties, 40);  // the stages after the first were exercised
+    std::vector<mpq_class> centroid(static_cast<std::size_t>(d), 0);
+    for (const std::int32_t id : simplex)
+      for (int k = 0; k < d; ++k) centroid[static_cast<std::size_t>(k)] += mpq_class(points.point(static_cast<std::size_t>(id))[k]);
+    for (mpq_class& c : centroid) c /= d + 1;
+    expect_stages_match(points, centroid, hull::Perturbation(points.coords.data(), d, simplex, {}));
   }
+}
+
+TEST(ConvexHull, ThinFirstSimplexUsesTheExactCentroid) {
+  // A point 2^60 away from the others: the first simplex is 2^60 long and about 1 wide, and its
+  // centroid rounds to a double outside it. Points on the hull's edges make ties that the exact
+  // centroid decides.
+  const double far = std::ldexp(1.0, 60);
+  const PointCloud points{2, {-0.5, 0, 1, 0, 0, -1, 0, 0.5, far, -0.75 * far, 0.25, 0, 0.5, 0, -0.25, 0.25, -0.25, -0.5}};
+  const hull::InitialSimplex simplex = hull::initial_simplex(points);
+  EXPECT_TRUE(simplex.interior.empty());
+  const ConvexHull hull = convex_hull(points);
+  expect_valid(points, hull);
+  EXPECT_EQ(hull.vertices, (std::vector<std::int32_t>{0, 1, 2, 3, 4}));
+  std::vector<std::int32_t> coplanar;
+  for (std::size_t c = 0; c < hull.coplanar.size(); c += 3) coplanar.push_back(hull.coplanar[c]);
+  std::sort(coplanar.begin(), coplanar.end());
+  EXPECT_EQ(coplanar, (std::vector<std::int32_t>{7, 8}));  // the middles of two edges
 }
 
 }  // namespace

@@ -121,7 +121,7 @@ InitialSimplex initial_simplex(PointsView points) {
     for (double& r : residual) r /= norm;
     directions.push_back(residual);
   }
-  // The interior point: the centroid, moved toward a vertex while rounding leaves it outside.
+  // The interior point: the centroid, when rounding leaves it strictly inside.
   std::array<const double*, kMaxDimension + 1> rows{};
   for (int k = 0; k <= d; ++k) rows[static_cast<std::size_t>(k)] = at(simplex.ids[static_cast<std::size_t>(k)]);
   const int orientation = geometry::orientation(geometry::Frame{d, d, nullptr, rows[0]}, rows.data() + 1);
@@ -131,12 +131,7 @@ InitialSimplex initial_simplex(PointsView points) {
     for (int i = 0; i <= d; ++i) sum += rows[static_cast<std::size_t>(i)][k];
     simplex.interior[static_cast<std::size_t>(k)] = sum / (d + 1);
   }
-  for (int attempt = 0; !strictly_inside(points, simplex.ids, simplex.interior.data(), orientation); ++attempt) {
-    if (attempt == 64) throw InternalError("convex hull: no point strictly inside the first simplex was found");
-    const double* toward = rows[static_cast<std::size_t>(attempt % (d + 1))];
-    for (int k = 0; k < d; ++k)
-      simplex.interior[static_cast<std::size_t>(k)] = 0.5 * (simplex.interior[static_cast<std::size_t>(k)] + toward[k]);
-  }
+  if (!strictly_inside(points, simplex.ids, simplex.interior.data(), orientation)) simplex.interior.clear();
   return simplex;
 }
 

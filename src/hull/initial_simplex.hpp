@@ -16,7 +16,9 @@ namespace drange::hull {
 
 struct InitialSimplex {
   std::vector<std::int32_t> ids;  // d+1 affinely independent points
-  std::vector<double> interior;   // a point strictly inside their simplex (d coordinates)
+  // Their centroid rounded to doubles when that is strictly inside the simplex (exactly
+  // checked); empty otherwise (a simplex thinner than the doubles' spacing there).
+  std::vector<double> interior;
 };
 
 // Throws DegenerateInputError, naming the dimension of the points' affine hull, when they do

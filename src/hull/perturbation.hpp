@@ -26,10 +26,15 @@
 
 namespace drange::hull {
 
+// O is the centroid of the first simplex. Where it rounds to a double strictly inside that
+// simplex (on every input but extremely thin ones), stages 2 and 3 are the library's predicates
+// about that double; otherwise they are evaluated about the exact centroid, in integers (GMP).
 class Perturbation {
  public:
-  // `coords`: n*d coordinates, row-major; `interior`: O, d coordinates.
-  Perturbation(const double* coords, int d, std::vector<double> interior) : coords_(coords), d_(d), interior_(std::move(interior)) {}
+  // `coords`: n*d coordinates, row-major; `simplex`: the first simplex's d+1 ids; `interior`:
+  // the centroid rounded to doubles when that is strictly inside, else empty.
+  Perturbation(const double* coords, int d, std::vector<std::int32_t> simplex, std::vector<double> interior)
+      : coords_(coords), d_(d), simplex_(std::move(simplex)), interior_(std::move(interior)) {}
 
   // The perturbed sign of det[a_1 - a_0; ...; a_d - a_0] for the d+1 ids `a` (distinct ids),
   // given that the unperturbed sign is `unperturbed` (the caller has it exactly); throws
@@ -39,13 +44,21 @@ class Perturbation {
   int unperturbed(const std::int32_t* a) const;
 
   const double* point(std::int32_t id) const { return coords_ + static_cast<std::size_t>(id) * static_cast<std::size_t>(d_); }
-  const std::vector<double>& interior() const { return interior_; }
   // Lexicographic order of the coordinates, then of the ids: the ranks of stage 3.
   bool before(std::int32_t a, std::int32_t b) const;
 
  private:
+  // Stage 2's determinant det[p_i - O, |p_i - O|^2] for the d+1 points `p`, and stage 3's
+  // det[p_k - O] for d points: signs, exactly.
+  int lifted_about_interior(const double* const* p) const;
+  int orientation_about_interior(const double* const* p) const;
+  // The same about the exact centroid: rows (d+1) p_i - sum of the simplex's vertices, in
+  // integers after one common power-of-two scaling (positive factors: the signs are kept).
+  int exact_about_centroid(const double* const* p, int rows, bool lifted) const;
+
   const double* coords_;
   int d_;
+  std::vector<std::int32_t> simplex_;
   std::vector<double> interior_;
 };
 

@@ -21,7 +21,7 @@ Quickhull::Quickhull(const double* coords, std::int32_t n, int d, bool filters, 
       // are differences (one rounding each), as the search's facet-plane filter.
       gamma_(geometry::gamma_bound(geometry::laplace_roundings(d, 1))),
       simplex_(std::move(simplex)),
-      perturbation_(coords, d, simplex_.interior),
+      perturbation_(coords, d, simplex_.ids, simplex_.interior),
       minors_(d),
       ids_(static_cast<std::size_t>(d + 1)),
       tuple_(static_cast<std::size_t>(d)) {}
