@@ -64,4 +64,13 @@ HullGeometry hull_geometry(PointsView points, const ConvexHull& hull);
 // coplanarity nor degeneracy counts as.
 std::vector<std::int8_t> facet_sides(PointsView points, const ConvexHull& hull, const double* x);
 
+// For the hull of the dual points of halfspaces A_i x + b_i <= 0 (`halfspaces`: the rows
+// [A_i, b_i], d+1 numbers each; dual point i is A_i / -(b_i + A_i . c) for a point c strictly
+// inside them all), the facets grouped by the vertex of the intersection they stand for: for
+// each facet, the least index among the facets connected to it across ridges whose halfspaces
+// meet in one point. Exact on the halfspaces themselves, whatever rounding the dual points
+// carry: neighbours are merged when the extra halfspace of one passes through the other's
+// vertex (a (d+1) x (d+1) determinant of the rows is zero).
+std::vector<std::int32_t> vertex_groups(PointsView halfspaces, const ConvexHull& dual);
+
 }  // namespace drange

@@ -4,7 +4,9 @@ dimensions.
 The classes have the names, attributes and methods of scipy.spatial's, so switching is one
 line::
 
-    from drange import ConvexHull, Delaunay, Voronoi   # instead of: from scipy.spatial import ...
+    from drange import Delaunay, Voronoi   # instead of: from scipy.spatial import ...
+
+(and ConvexHull, HalfspaceIntersection.)
 
 drange.interpolate has scipy.interpolate's LinearNDInterpolator, NearestNDInterpolator and
 griddata over the exact triangulation.
@@ -15,9 +17,10 @@ duplicates give one well-defined triangulation, the same for any input order.
 from ._drange import DegenerateInputError, Error, variant_names
 from ._delaunay import Delaunay
 from ._hull import ConvexHull
+from ._halfspace import HalfspaceIntersection
 from ._voronoi import ClippedCells, Voronoi
 from ._check import check_triangulation
 from . import interpolate
 
-__all__ = ["ConvexHull", "Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error", "DegenerateInputError", "variant_names", "interpolate"]
+__all__ = ["ConvexHull", "HalfspaceIntersection", "Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error", "DegenerateInputError", "variant_names", "interpolate"]
 __version__ = "0.1.0"

@@ -51,6 +51,11 @@ void bind_hull(py::module_& m) {
         const auto rows = static_cast<py::ssize_t>(h.result.size());
         return py::make_tuple(adopt(std::move(g.equations), {rows, static_cast<py::ssize_t>(h.result.dim + 1)}), g.area, g.volume);
       })
+      .def("vertex_groups", [](const Hulled& h, const Points& halfspaces) {
+        std::vector<std::int32_t> groups = vertex_groups(points_view(halfspaces, "halfspaces"), h.result);
+        const auto rows = static_cast<py::ssize_t>(groups.size());
+        return adopt(std::move(groups), {rows});
+      }, py::arg("halfspaces"))
       .def("facet_sides", [](const Hulled& h, const Points& x) {
         if (x.ndim() != 1 || x.shape(0) != h.result.dim)
           throw py::value_error("the point must have " + std::to_string(h.result.dim) + " coordinates");
