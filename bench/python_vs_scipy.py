@@ -1,9 +1,11 @@
 """drange's Python classes against scipy.spatial's, side by side in one run, as a user sees
 them: wall time of the call (conversion and result arrays included), best of `--repeat`.
 
-    PYTHONPATH=build/python /usr/bin/python3 bench/python_vs_scipy.py [--quick] [--repeat N] [-o FILE]
+    PYTHONPATH=build/python /usr/bin/python3 bench/python_vs_scipy.py [--quick] [--repeat N] [--only PREFIX] [-o FILE]
 
 Prints one Markdown table: time of each, and the ratio drange/scipy (below 1: drange faster).
+ConvexHull rows read `volume` from both (scipy computes it in the constructor, drange on first
+use). `--only ConvexHull` runs those rows alone.
 """
 import argparse
 import os
@@ -50,12 +52,34 @@ def cases(quick):
     ours.find_simplex(queries[:10])  # builds the locator outside the timing, as scipy's is built with the triangulation
     yield f"find_simplex {n} queries, 100000 points 2D", (lambda: ours.find_simplex(queries)), \
         (lambda: theirs.find_simplex(queries))
+    yield from hull_cases(rng, quick)
+
+
+def hull_cases(rng, quick):
+    def ball(n, d):
+        x = rng.standard_normal((n, d))
+        x /= np.linalg.norm(x, axis=1)[:, None]
+        return x * rng.random(n)[:, None] ** (1 / d)
+
+    def sphere(n, d):
+        x = rng.standard_normal((n, d))
+        return x / np.linalg.norm(x, axis=1)[:, None]
+
+    scale = 10 if quick else 1
+    inputs = [(f"uniform {d}D", rng.random((n // scale, d))) for d, n in
+              ((2, 1000000), (3, 1000000), (4, 1000000), (5, 100000), (6, 20000))]
+    inputs += [("ball 3D", ball(1000000 // scale, 3)), ("sphere 2D", sphere(1000000 // scale, 2)),
+               ("sphere 3D", sphere(1000000 // scale, 3)), ("sphere 4D", sphere(20000 // scale, 4))]
+    for name, points in inputs:
+        yield f"ConvexHull {name} {len(points)}", (lambda p=points: drange.ConvexHull(p).volume), \
+            (lambda p=points: scipy.spatial.ConvexHull(p).volume)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="small inputs (about 30 s)")
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--only", default="", help="only the cases whose name starts with this (e.g. ConvexHull)")
     parser.add_argument("-o", "--output", help="also write the table to this file")
     args = parser.parse_args()
     lines = [f"drange {drange.__version__} vs scipy {scipy.__version__} (Qhull), one thread, best of {args.repeat}; "
@@ -63,6 +87,8 @@ def main():
              "", "| case | drange | scipy | drange/scipy |", "|---|---|---|---|"]
     print("\n".join(lines), flush=True)
     for name, ours, theirs in cases(args.quick):
+        if not name.startswith(args.only):
+            continue
         a, b = best_time(ours, args.repeat), best_time(theirs, args.repeat)
         line = f"| {name} | {a:.3f} s | {b:.3f} s | {a / b:.2f} |"
         print(line, flush=True)

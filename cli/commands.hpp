@@ -13,12 +13,14 @@ inline constexpr const char* kVersion = "0.1.0";
 int run_delaunay(const std::vector<std::string>& args);
 int run_voronoi(const std::vector<std::string>& args);
 int run_check(const std::vector<std::string>& args);
+int run_hull(const std::vector<std::string>& args);
 int run_generate(const std::vector<std::string>& args);
 
 // The help texts, printed by `drange COMMAND --help` and `drange help COMMAND`.
 std::string delaunay_help();
 std::string voronoi_help();
 std::string check_help();
+std::string hull_help();
 std::string generate_help();
 std::string general_help();
 

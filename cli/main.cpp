@@ -25,6 +25,7 @@ constexpr Command kCommands[] = {
     {"delaunay", run_delaunay, delaunay_help},
     {"voronoi", run_voronoi, voronoi_help},
     {"check", run_check, check_help},
+    {"hull", run_hull, hull_help},
     {"generate", run_generate, generate_help},
 };
 
@@ -36,7 +37,7 @@ const Command* find_command(const std::string& name) {
 }
 
 [[noreturn]] void unknown_command(const std::string& name) {
-  throw UsageError("unknown command '" + name + "' (expected delaunay, voronoi, check, generate or help)");
+  throw UsageError("unknown command '" + name + "' (expected delaunay, voronoi, check, hull, generate or help)");
 }
 
 // `drange help [COMMAND]`.

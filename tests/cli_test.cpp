@@ -52,6 +52,7 @@ TEST(Cli, HelpForEachCommand) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
       {"delaunay", {"--output", "--neighbors", "--stats", "--variant", "--threads", "--quiet", "full, scan"}},
       {"check", {"--quiet", "qdelaunay i"}},
+      {"hull", {"--output", "--neighbors", "--coplanar", "--stats", "--quiet", "qconvex i"}},
       {"generate", {"--seed", "--output", "uniform", "ball", "sphere", "gaussian", "clustered", "grid"}},
   };
   for (const auto& [command, words] : commands) {
@@ -79,7 +80,7 @@ TEST(Cli, UnknownCommand) {
   const CliRun run = run_cli(dir, {"triangulate"});
   EXPECT_EQ(run.code, 2);
   EXPECT_EQ(run.err,
-            "drange: unknown command 'triangulate' (expected delaunay, voronoi, check, generate or help)\n"
+            "drange: unknown command 'triangulate' (expected delaunay, voronoi, check, hull, generate or help)\n"
             "Try 'drange --help'.\n");
 }
 

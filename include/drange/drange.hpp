@@ -5,6 +5,7 @@
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
 #include "drange/formats.hpp"
+#include "drange/hull.hpp"
 #include "drange/generate.hpp"
 #include "drange/io.hpp"
 #include "drange/locate.hpp"

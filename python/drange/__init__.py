@@ -1,9 +1,12 @@
-"""drange: exact Delaunay triangulations and Voronoi diagrams of points in 2 to 11 dimensions.
+"""drange: exact Delaunay triangulations, Voronoi diagrams and convex hulls of points in 2 to 11
+dimensions.
 
 The classes have the names, attributes and methods of scipy.spatial's, so switching is one
 line::
 
-    from drange import Delaunay, Voronoi      # instead of: from scipy.spatial import ...
+    from drange import Delaunay, Voronoi   # instead of: from scipy.spatial import ...
+
+(and ConvexHull, HalfspaceIntersection.)
 
 drange.interpolate has scipy.interpolate's LinearNDInterpolator, NearestNDInterpolator and
 griddata over the exact triangulation.
@@ -13,9 +16,12 @@ duplicates give one well-defined triangulation, the same for any input order.
 """
 from ._drange import DegenerateInputError, Error, algorithm_names, variant_names
 from ._delaunay import Delaunay
+from ._hull import ConvexHull
+from ._halfspace import HalfspaceIntersection
 from ._voronoi import ClippedCells, Voronoi
 from ._check import check_triangulation
 from . import interpolate
 
-__all__ = ["Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error", "DegenerateInputError", "variant_names", "algorithm_names", "interpolate"]
+__all__ = ["ConvexHull", "HalfspaceIntersection", "Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error",
+           "DegenerateInputError", "variant_names", "algorithm_names", "interpolate"]
 __version__ = "0.1.0"

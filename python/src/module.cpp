@@ -23,15 +23,6 @@
 namespace drange::python {
 namespace {
 
-using Points = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
-PointsView points_view(const Points& points, const char* what) {
-  if (points.ndim() != 2)
-    throw py::value_error(std::string(what) + " must be a 2-D array of shape (npoints, ndim); got " +
-                          std::to_string(points.ndim()) + " dimensions");
-  return PointsView(points.data(), static_cast<std::size_t>(points.shape(0)), static_cast<int>(points.shape(1)));
-}
-
 Options engine_options(const std::string& variant, const std::string& algorithm, int threads, PythonProgress& progress) {
   Options options;
   options.variant = variant;
@@ -171,6 +162,8 @@ void register_errors(py::module_& m) {
 
 }  // namespace
 
+void bind_hull(py::module_& m);  // hull_bindings.cpp
+
 PYBIND11_MODULE(_drange, m) {
   m.doc() = "drange's engine; use the classes of the drange package.";
   register_errors(m);
@@ -279,6 +272,7 @@ PYBIND11_MODULE(_drange, m) {
     return d;
   }, py::arg("points"), py::arg("simplices"), py::arg("max_problems"));
 
+  bind_hull(m);
   m.attr("variant_names") = variant_names();
   m.attr("algorithm_names") = algorithm_names();
 }

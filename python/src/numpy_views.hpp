@@ -1,16 +1,30 @@
-// python/src/numpy_views.hpp: NumPy arrays over memory that C++ objects own, without copies.
+// python/src/numpy_views.hpp: NumPy arrays over memory that C++ objects own, without copies;
+// the points' view of a NumPy array.
 #pragma once
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
+
+#include "drange/points.hpp"
 
 namespace drange::python {
 
 namespace py = pybind11;
+
+// Points as the engine reads them: float64, C order (NumPy converts anything else).
+using Points = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+inline PointsView points_view(const Points& points, const char* what) {
+  if (points.ndim() != 2)
+    throw py::value_error(std::string(what) + " must be a 2-D array of shape (npoints, ndim); got " +
+                          std::to_string(points.ndim()) + " dimensions");
+  return PointsView(points.data(), static_cast<std::size_t>(points.shape(0)), static_cast<int>(points.shape(1)));
+}
 
 // A row-major array over `data`, kept alive by `owner` (the Python object that owns the memory).
 template <class T>
