@@ -81,9 +81,8 @@ ABLATION = [
     ("uniform", 100000, 2, ["full", "no-bottom-up", "no-seed", "no-ball", "paper", "no-prune", "no-order"]),
     ("uniform", 20000, 2, ["full", "paper", "no-prune", "no-order", "kdtree", "scan"]),
     ("uniform", 20000, 3, ["full", "no-bottom-up", "no-seed", "no-ball", "paper", "no-prune", "no-order", "kdtree"]),
-    # The nodes' slabs act on points sampled from surfaces only (uniform points keep none).
-    ("family:ellipsoid_200k", 200000, 3, ["full", "no-slab", "no-hull"]),
     # The hull's facets known beforehand act on large hulls (uniform points keep none).
+    ("family:ellipsoid_200k", 200000, 3, ["full", "no-hull"]),
     ("family:ellipse", 20000, 2, ["full", "no-hull"]),
     ("sphere", 200000, 2, ["full", "no-hull"]),
 ]

@@ -89,7 +89,7 @@ while read -r dist n d; do
 done <<<"$generated"
 
 variant_inputs="sphere_3d_2000 decimal_grid5 uniform_8d_300"
-variants="scan kdtree no-prune no-order paper no-bottom-up no-seed no-ball no-shell no-tie-memory no-slab no-hull fifo spatial"
+variants="scan kdtree no-prune no-order paper no-bottom-up no-seed no-ball no-shell no-tie-memory no-hull fifo spatial"
 
 # run EXE DIR THREADS INPUT VORONOI [VARIANT]: the outputs into DIR, with each command's exit
 # status and standard error in DIR/status.

@@ -350,7 +350,7 @@ TEST(DelaunayVariants, EveryVariantGivesTheSameTriangulation) {
                                           drange::generate_points(Distribution::Gaussian, 300, 4, 22)};
   for (const PointCloud& points : inputs) {
     const auto reference = canonical(drange::delaunay(points));
-    for (const char* name : {"scan", "kdtree", "no-prune", "no-order", "paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-tie-memory", "no-slab", "no-hull", "fifo", "spatial"}) {
+    for (const char* name : {"scan", "kdtree", "no-prune", "no-order", "paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-tie-memory", "no-hull", "fifo", "spatial"}) {
       drange::Options options;
       options.variant = name;
       const Triangulation t = drange::delaunay(points, options);
@@ -398,7 +398,7 @@ TEST(DelaunayVariants, BottomUpAndSeedsChangeNothingOnDegenerateInputs) {
   }
   for (const auto& [name, points] : cases) {
     const auto reference = canonical(drange::delaunay(points));
-    for (const char* variant : {"paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "no-slab", "scan", "fifo", "spatial"}) {
+    for (const char* variant : {"paper", "no-bottom-up", "no-seed", "no-ball", "no-shell", "scan", "fifo", "spatial"}) {
       drange::Options options;
       options.variant = variant;
       EXPECT_EQ(canonical(drange::delaunay(points, options)), reference) << name << ", " << variant;

@@ -119,8 +119,8 @@ TEST(PreparePoints, RanksAndDuplicatesInFiveDimensions) {
 }
 
 // The search's accelerators are built only when the options use them: on a sphere (3D: the
-// shell, the hull's facets; node slabs on its patches) each is there with the full search and
-// absent with its switch off, the others unchanged.
+// shell, the hull's facets) each is there with the full search and absent with its switch off,
+// the other unchanged.
 TEST(PreparePoints, BuildsOnlyTheAcceleratorsTheOptionsUse) {
   const PointCloud points = drange::generate_points(drange::Distribution::Sphere, 4000, 3, 5);
   const auto store_for = [&](const char* variant) {
@@ -130,13 +130,10 @@ TEST(PreparePoints, BuildsOnlyTheAcceleratorsTheOptionsUse) {
   };
   const drange::engine::PointStore full = store_for("full");
   ASSERT_TRUE(full.shell.active());
-  ASSERT_GT(full.slabs.size(), 0u);
   ASSERT_TRUE(full.hull.active());
-  const drange::engine::PointStore no_shell = store_for("no-shell"), no_slab = store_for("no-slab"), no_hull = store_for("no-hull");
+  const drange::engine::PointStore no_shell = store_for("no-shell"), no_hull = store_for("no-hull");
   EXPECT_FALSE(no_shell.shell.active());
-  EXPECT_GT(no_shell.slabs.size(), 0u);
-  EXPECT_EQ(no_slab.slabs.size(), 0u);
-  EXPECT_TRUE(no_slab.shell.active());
+  EXPECT_TRUE(no_shell.hull.active());
   EXPECT_FALSE(no_hull.hull.active());
   EXPECT_TRUE(no_hull.shell.active());
   EXPECT_FALSE(store_for("scan").shell.active());  // the shell prunes kd-tree nodes: no tree, no shell

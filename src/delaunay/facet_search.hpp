@@ -10,8 +10,8 @@
 //   - geometry/facet_plane_test.hpp, geometry/lifted_sphere_test.hpp: the two predicates it
 //     asks (open side; beats the candidate), each with its exact stages;
 //   - search/candidate_ball.hpp: the query box and ball, enlarged by their rounding bounds;
-//   - search/shell_pruner.hpp, search/slab_pruner.hpp, known_hull.hpp, seed_memory.hpp: the
-//     accelerators, which change the order in which points are met, never the point found.
+//   - search/shell_pruner.hpp, known_hull.hpp, seed_memory.hpp: the accelerators, which
+//     change the order in which points are met, never the point found.
 // SearchOptions switches each step off, for measurements (--variant).
 //
 // The kernel is compiled for d = 2..8 (fixed-size loops) and once for any d; the same

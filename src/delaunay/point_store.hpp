@@ -10,7 +10,6 @@
 
 #include "delaunay/known_hull.hpp"
 #include "delaunay/leaf_blocks.hpp"
-#include "delaunay/node_slabs.hpp"
 #include "delaunay/sphere_shell.hpp"
 #include "spatial/kdtree.hpp"
 #include "util/uninitialized_vector.hpp"
@@ -26,7 +25,6 @@ struct PointStore {
   util::UninitializedVector<std::int32_t> input_index;  // input index of each id (n < 2^31)
   spatial::KdTree tree;                    // over the ids
   LeafBlocks blocks;                       // the leaves' points in blocks, for the search's leaf scan
-  NodeSlabs slabs;                         // thin slabs around the flat nodes' points (surfaces)
   KnownHull hull;                          // the hull's clean facets, when it has many (2D, 3D)
   // True when the coordinates were scaled below 1 in magnitude (prepare_points.cpp): then every
   // entry of the search's determinants is below 2^6 and no underflow can escape the error bounds

@@ -211,7 +211,6 @@ PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate
   store.coords = std::move(by_rank);  // now in tree order
   store.blocks = LeafBlocks(store.tree, store.coords.data(), d, team);
   // The search's accelerators, each only when the search will consult it (FacetSearch).
-  if (accelerators.node_slabs) store.slabs = NodeSlabs(store.tree, store.coords.data(), d, team);
   if (accelerators.use_kdtree && accelerators.sphere_shell) store.shell = fit_sphere_shell(store.coords.data(), store.size, d, store.tree);
   if (accelerators.known_hull_facets) {
     store.hull.edges = HullEdges(store);

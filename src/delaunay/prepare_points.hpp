@@ -14,8 +14,8 @@ namespace drange::engine {
 // duplicates (reported, left out), ranks the distinct points lexicographically and stores them
 // in kd-tree order. Throws DegenerateInputError with fewer than d+1 distinct points. The sort
 // and the kd-tree use the team's threads; the result is the same for every thread count.
-// `accelerators`: the search options whose accelerators (node slabs, sphere shell, known hull
-// facets) are built; the others are left empty, which the search reads as off.
+// `accelerators`: the search options whose accelerators (sphere shell, known hull facets) are
+// built; the others are left empty, which the search reads as off.
 PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates, Team& team,
                           const SearchOptions& accelerators = SearchOptions{});
 

@@ -18,22 +18,21 @@ struct NamedVariant {
 constexpr engine::FacetOrder automatic = engine::FacetOrder::automatic, fifo = engine::FacetOrder::fifo,
                              spatial = engine::FacetOrder::spatial;
 const NamedVariant kVariants[] = {
-    //                kdtree prune  order  bottom_up seed  ball   shell  ties   slabs  facet order  hull
-    {"full",          {true,  true,  true,  true,  true,  true,  true,  true,  true,  automatic, true}},
-    {"scan",          {false, false, false, false, false, false, false, false, false, fifo,      false}},
-    {"kdtree",        {true,  false, false, false, false, false, false, false, false, fifo,      false}},
-    {"no-prune",      {true,  false, true,  true,  true,  true,  true,  true,  true,  automatic, true}},
-    {"no-order",      {true,  true,  false, true,  true,  true,  true,  true,  true,  automatic, true}},
-    {"paper",         {true,  true,  true,  false, false, false, false, false, false, fifo,      false}},
-    {"no-bottom-up",  {true,  true,  true,  false, true,  true,  true,  true,  true,  automatic, true}},
-    {"no-seed",       {true,  true,  true,  true,  false, true,  true,  true,  true,  automatic, true}},
-    {"no-ball",       {true,  true,  true,  true,  true,  false, true,  true,  true,  automatic, true}},
-    {"no-shell",      {true,  true,  true,  true,  true,  true,  false, true,  true,  automatic, true}},
-    {"no-tie-memory", {true,  true,  true,  true,  true,  true,  true,  false, true,  automatic, true}},
-    {"no-slab",       {true,  true,  true,  true,  true,  true,  true,  true,  false, automatic, true}},
-    {"no-hull",       {true,  true,  true,  true,  true,  true,  true,  true,  true,  automatic, false}},
-    {"fifo",          {true,  true,  true,  true,  true,  true,  true,  true,  true,  fifo,      true}},
-    {"spatial",       {true,  true,  true,  true,  true,  true,  true,  true,  true,  spatial,   true}},
+    //                kdtree prune  order  bottom_up seed  ball   shell  ties   facet order  hull
+    {"full",          {true,  true,  true,  true,  true,  true,  true,  true,  automatic, true}},
+    {"scan",          {false, false, false, false, false, false, false, false, fifo,      false}},
+    {"kdtree",        {true,  false, false, false, false, false, false, false, fifo,      false}},
+    {"no-prune",      {true,  false, true,  true,  true,  true,  true,  true,  automatic, true}},
+    {"no-order",      {true,  true,  false, true,  true,  true,  true,  true,  automatic, true}},
+    {"paper",         {true,  true,  true,  false, false, false, false, false, fifo,      false}},
+    {"no-bottom-up",  {true,  true,  true,  false, true,  true,  true,  true,  automatic, true}},
+    {"no-seed",       {true,  true,  true,  true,  false, true,  true,  true,  automatic, true}},
+    {"no-ball",       {true,  true,  true,  true,  true,  false, true,  true,  automatic, true}},
+    {"no-shell",      {true,  true,  true,  true,  true,  true,  false, true,  automatic, true}},
+    {"no-tie-memory", {true,  true,  true,  true,  true,  true,  true,  false, automatic, true}},
+    {"no-hull",       {true,  true,  true,  true,  true,  true,  true,  true,  automatic, false}},
+    {"fifo",          {true,  true,  true,  true,  true,  true,  true,  true,  fifo,      true}},
+    {"spatial",       {true,  true,  true,  true,  true,  true,  true,  true,  spatial,   true}},
 };
 
 }  // namespace

@@ -48,10 +48,6 @@ struct SearchOptions {
   // again (ties that no floating-point filter decides: exactly cospherical points whose
   // coordinates are not dyadic, as in a grid in cylindrical coordinates).
   bool remember_ties = true;
-  // On points sampled from surfaces, also skip the kd-tree nodes whose points lie in a thin slab
-  // across their patch's normal that misses the candidate's ball or lies on the closed side of
-  // the facet (src/delaunay/node_slabs.hpp), where their axis-aligned boxes do not.
-  bool node_slabs = true;
   // Which open facet is searched next (ours too: it changes the simplices' order, not the set).
   FacetOrder facet_order = FacetOrder::automatic;
   // In 2D and 3D, find the convex hull's facets with no other point on their hyperplane

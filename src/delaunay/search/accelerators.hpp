@@ -13,14 +13,13 @@
 //   - found(facet, apex):        the search's answer, for later searches.
 // Each accelerator lives in its own file and is registered here by one member; removing one
 // means deleting its file and its lines below. Each is off when its SearchOptions switch is
-// off or its data is empty; prepare_points.cpp builds the hull, shell and slab data only when
-// their switches are on (the seed memory is sized by its owner, FacetSearch or the pipeline).
+// off or its data is empty; prepare_points.cpp builds the hull and shell data only when their
+// switches are on (the seed memory is sized by its owner, FacetSearch or the pipeline).
 //
 // Registered:
 //   known hull facets (known_hull.hpp)       a clean hull facet's outer side is empty   no-hull
 //   seed memory (seed_memory.hpp)            the last apexes around the facet's vertices no-seed
 //   sphere shell (shell_pruner.hpp)          points near spheres                         no-shell
-//   node slabs (slab_pruner.hpp)             points on surfaces                          no-slab
 #pragma once
 
 #include <cstdint>
@@ -29,7 +28,6 @@
 #include "delaunay/known_hull.hpp"
 #include "delaunay/point_store.hpp"
 #include "delaunay/search/shell_pruner.hpp"
-#include "delaunay/search/slab_pruner.hpp"
 #include "delaunay/seed_memory.hpp"
 #include "delaunay/search_options.hpp"
 #include "drange/errors.hpp"
@@ -44,10 +42,7 @@ class Accelerators {
         hull_(options.known_hull_facets && points.hull.active() ? &points.hull : nullptr),
         seeds_(options.seed_candidate ? &seeds : nullptr),
         shell_(points.dim, options.use_kdtree && options.sphere_shell && points.shell.active() ? &points.shell : nullptr,
-               points.tree, points.coords.data()),
-        // Where one sphere holds every node, its offsets and cones bound each node better than
-        // a slab: the slabs are not tried there.
-        slabs_(points.dim, options.node_slabs && points.slabs.size() > 0 && !shell_.everywhere() ? &points.slabs : nullptr) {
+               points.tree, points.coords.data()) {
     // seed<kSeeds>() and remember<kSeeds>() take the memory's layout on trust.
     if (kSeeds > 0 && seeds.seeds_per_point() != kSeeds)
       throw InternalError("facet search: a seed memory of " + std::to_string(seeds.seeds_per_point()) +
@@ -60,7 +55,6 @@ class Accelerators {
 
   // A new facet (sorted ids, f0, the plane's coefficients a of sigma O(x) = a . (x - f0)).
   void start_facet(const std::int32_t* facet, const double* f0, const double* plane) {
-    slabs_.start_search();
     if (shell_.enabled()) shell_.start_facet(facet, f0, plane);
   }
   // Calls consider(id) for each first candidate of the facet.
@@ -84,20 +78,12 @@ class Accelerators {
   void start_candidate(std::int32_t candidate, int sigma, const double* const* rows) { shell_.start_candidate(candidate, sigma, rows); }
   void centred(const double* centre) { shell_.ball_centred(centre); }
 
-  // Whether the node can hold no point that beats the candidate: outside its sphere. `ball`:
-  // the candidate has a query ball (centre, reach), whose box the node's box meets.
-  bool beyond_candidate(std::int32_t node, bool ball, const double* centre, double reach) {
-    if (shell_.scanning() && shell_.prunes(node)) return true;
-    // A node of a curved patch whose box meets the ball may still lie wholly outside it (the
-    // shell, where it serves, decides the nodes near its sphere better).
-    return ball && !shell_.scanning() && slabs_.trying() && slabs_.misses_ball(node, centre, reach);
-  }
-  // Whether every point of the node (box [lo, hi]) is on the facet's closed side, where the
-  // plane's own test over the box could not tell (its absolute tree box_abs and factor box_gamma).
-  bool closed_side(std::int32_t node, const double* lo, const double* hi, const double* plane, const double* f0, double box_gamma,
-                   double box_abs) {
-    if (shell_.enabled() && shell_.on_closed_side(node, box_gamma, box_abs)) return true;
-    return slabs_.trying() && slabs_.on_closed_side(node, lo, hi, plane, f0, box_gamma, box_abs);
+  // Whether the node can hold no point that beats the candidate: outside its sphere.
+  bool beyond_candidate(std::int32_t node) const { return shell_.scanning() && shell_.prunes(node); }
+  // Whether every point of the node is on the facet's closed side, where the plane's own test
+  // over the node's box could not tell (its absolute tree box_abs and factor box_gamma).
+  bool closed_side(std::int32_t node, double box_gamma, double box_abs) const {
+    return shell_.enabled() && shell_.on_closed_side(node, box_gamma, box_abs);
   }
 
   // The leaf's points, when an accelerator scans them itself (true); consider(id) tests one.
@@ -116,7 +102,6 @@ class Accelerators {
   const KnownHull* hull_;
   SeedMemory* seeds_;
   ShellPruner<D> shell_;
-  SlabPruner<D> slabs_;
 };
 
 }  // namespace drange::engine

@@ -16,10 +16,10 @@
 // The arithmetic lives in the two predicates; the kernel only asks their signs and never
 // changes which point is found, only the order in which points are met.
 //
-// The accelerators (known hull facets, seeds, sphere shell, node slabs) are consulted through
-// one interface, accelerators.hpp, where each is registered. The closed-side pruning (paper,
-// 2.4.1), the facet's child first (2.4.2), the bottom-up walk and the ball (instead of the
-// paper's box) are the search's own, switched by SearchOptions.
+// The accelerators (known hull facets, seeds, sphere shell) are consulted through one
+// interface, accelerators.hpp, where each is registered. The closed-side pruning (paper, 2.4.1),
+// the facet's child first (2.4.2), the bottom-up walk and the ball (instead of the paper's box)
+// are the search's own, switched by SearchOptions.
 #pragma once
 
 #include <algorithm>
@@ -300,7 +300,7 @@ bool SearchKernel<D>::prune(std::int32_t node, bool leaf) {
     for (k = 1; k < d; ++k) distance2 += squares[static_cast<std::size_t>(k)];
     if (distance2 > region_.reach2()) return true;
   }
-  if (accelerators_.beyond_candidate(node, ball, region_.centre(), region_.reach())) return true;
+  if (accelerators_.beyond_candidate(node)) return true;
   // Within the candidate's ball, the closed side is a thin cap of its sphere, inside the empty
   // sphere of the simplex already found there: nodes wholly on the closed side that meet the
   // ball are rare and hold few points, and testing for them costs more than scanning them.
@@ -314,7 +314,7 @@ bool SearchKernel<D>::prune(std::int32_t node, bool leaf) {
   if (!options_.prune_closed_side || !filters_hold_) return false;
   double box_abs = 0.0;
   if (plane_.box_on_closed_side(lo, hi, box_abs)) return true;
-  return accelerators_.closed_side(node, lo, hi, plane_.coefficients(), f0_, plane_.box_gamma(), box_abs);
+  return accelerators_.closed_side(node, plane_.box_gamma(), box_abs);
 }
 
 template <int D>

@@ -54,8 +54,6 @@ class ShellPruner {
     sum_gamma_ = geometry::gamma_bound(6);
   }
   bool enabled() const { return shell_ != nullptr; }
-  // One sphere over the whole tree (a sphere, concentric spheres): every node is in it.
-  bool everywhere() const { return everywhere_; }
 
   // A new facet (sorted ids, f0, and the plane's coefficients a of sigma O(x) = a . (x - f0)):
   // the sphere all its vertices are on, if any, and the facet's terms about it.
@@ -454,7 +452,7 @@ class ShellPruner {
   const SphereShell* shell_;
   const spatial::KdTree& tree_;
   const double* coords_;
-  bool everywhere_ = false;
+  bool everywhere_ = false;  // one sphere over the whole tree (a sphere, concentric spheres)
   // Error bound factors of sign, box_linear_low, the cones and linear_prunes (see there).
   double point_gamma_ = 0.0, node_gamma_ = 0.0, cone_gamma_ = 0.0, sum_gamma_ = 0.0;
 
