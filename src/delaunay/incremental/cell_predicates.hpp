@@ -18,12 +18,14 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "delaunay/incremental/cell_complex.hpp"
 #include "delaunay/point_store.hpp"
 #include "geometry/error_bound.hpp"
 #include "geometry/predicates.hpp"
+#include "geometry/refined_sign.hpp"
 
 namespace drange::engine {
 
@@ -44,6 +46,8 @@ class CellPredicates {
     }
     ++unfiltered_;
     const geometry::Frame frame{d_, d_, nullptr, rows_[0]};
+    // Double-double first: points within rounding of a hyperplane, not on it, are decided there.
+    if (const std::optional<int> s = geometry::refined_orientation(frame, rows_.data() + 1)) return *s;
     return geometry::orientation(frame, rows_.data() + 1);
   }
 
@@ -72,6 +76,9 @@ class CellPredicates {
     }
     ++unfiltered_;
     const geometry::Frame frame{d_, d_, nullptr, rows_[0]};
+    // Double-double first: points within rounding of a sphere, not on it (circles, spheres,
+    // rings of a mesh), are decided there; ties go on to the exact stages and the perturbation.
+    if (const std::optional<int> s = geometry::refined_lifted_sign(frame, rows_.data() + 1); s && *s != 0) return *s < 0;
     return geometry::lifted_sign_perturbed(frame, rows_.data() + 1, ranks_.data()) < 0;
   }
 
