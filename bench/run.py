@@ -260,7 +260,7 @@ def main():
                     help="the 7D and 8D rows where the peers take over 10 minutes (about 70 min)")
     ap.add_argument("--degenerate", action="store_true",
                     help="the probe and surface inputs of bench/degenerate_families.py against CGAL and Qhull "
-                         "(about 18 min)")
+                         "(about 9 min)")
     ap.add_argument("--no-ablation", action="store_true")
     ap.add_argument("--repeat", type=int, default=1,
                     help="run each measurement N times and report the median (odd N: the middle run)")

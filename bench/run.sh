@@ -16,7 +16,7 @@
 #                                                           -> bench/results-beyond.md
 #   --degenerate the probe inputs of bench/degenerate_families.py (concentric spheres, bubbles,
 #                rings, smooth surfaces, a terrain's plateau, decimal grids) and its surface families
-#                (a cube's faces, mesh vertices, a freeform patch) against CGAL and Qhull (about 18 min)
+#                (a cube's faces, mesh vertices, a freeform patch) against CGAL and Qhull (about 9 min)
 #                                                           -> bench/results-degenerate.md
 #   --micro      also run the Google Benchmark microbenchmarks (appended to the file)
 #   --repeat N   each measurement N times, the median reported (the machine's noise: one run
