@@ -23,6 +23,14 @@ std::string word_of(double value) {
   return text.str();
 }
 
+// --OPTION NAME, NAME one of `names` (comma-separated), or `fallback` when absent.
+std::string named_option(const Arguments& arguments, const char* option, const char* fallback, const char* names) {
+  const std::string name = arguments.value_or(option, fallback);
+  if ((std::string(", ") + names + ", ").find(", " + name + ", ") == std::string::npos)
+    throw UsageError(std::string("--") + option + ": unknown " + option + " '" + name + "' (expected one of: " + names + ")");
+  return name;
+}
+
 }  // namespace
 
 int threads_option(const Arguments& arguments) {
@@ -31,19 +39,11 @@ int threads_option(const Arguments& arguments) {
 }
 
 std::string variant_option(const Arguments& arguments) {
-  const std::string name = arguments.value_or("variant", "full");
-  const std::string names = std::string(", ") + variant_names() + ", ";
-  if (names.find(", " + name + ", ") == std::string::npos)
-    throw UsageError("--variant: unknown variant '" + name + "' (expected one of: " + variant_names() + ")");
-  return name;
+  return named_option(arguments, "variant", "full", variant_names());
 }
 
 std::string algorithm_option(const Arguments& arguments) {
-  const std::string name = arguments.value_or("algorithm", "auto");
-  const std::string names = std::string(", ") + algorithm_names() + ", ";
-  if (names.find(", " + name + ", ") == std::string::npos)
-    throw UsageError("--algorithm: unknown algorithm '" + name + "' (expected one of: " + algorithm_names() + ")");
-  return name;
+  return named_option(arguments, "algorithm", "auto", algorithm_names());
 }
 
 bool standard_input_has_points() {

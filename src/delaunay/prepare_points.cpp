@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "drange/errors.hpp"
+#include "util/check_points.hpp"
 #include "drange/points.hpp"
 #include "geometry/error_bound.hpp"
 #include "util/for_ranges.hpp"
@@ -20,21 +21,6 @@ namespace drange::engine {
 namespace {
 using util::for_ranges;
 using util::sort_by_key;
-
-void check_input(PointsView input) {
-  if (input.dim < 2 || input.dim > kMaxDimension)
-    throw InputError("dimension " + std::to_string(input.dim) + " is not supported (drange triangulates in 2 to " +
-                     std::to_string(kMaxDimension) + " dimensions)");
-  if (input.n >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-    throw InputError(std::to_string(input.n) + " points are more than drange's limit of 2^31 - 2");
-  for (std::size_t i = 0; i < input.n; ++i)
-    for (int k = 0; k < input.dim; ++k) {
-      const double x = input.point(i)[k];
-      if (!std::isfinite(x))
-        throw InputError("point " + std::to_string(i) + ", coordinate " + std::to_string(k) + " is " +
-                         (std::isnan(x) ? "NaN" : "infinite"));
-    }
-}
 
 // The Delaunay triangulation does not change under scaling, and multiplying by a power of two
 // is exact unless it leaves the normal range. Bringing the largest magnitude near 1 keeps the
@@ -186,7 +172,7 @@ DistinctPoints distinct_points_fixed(PointsView input, std::vector<Duplicate>& d
 
 PointStore prepare_points(PointsView input, int leaf_size, std::vector<Duplicate>& duplicates, Team& team,
                           const SearchOptions& accelerators) {
-  check_input(input);
+  util::check_points(input, "triangulates");
   const int d = input.dim;
   duplicates.clear();
   DistinctPoints distinct = d == 2   ? distinct_points_fixed<2>(input, duplicates, team)

@@ -6,27 +6,13 @@
 #include <utility>
 
 #include "drange/errors.hpp"
+#include "util/check_points.hpp"
 #include "drange/hull.hpp"
 #include "hull/initial_simplex.hpp"
 #include "hull/quickhull.hpp"
 
 namespace drange {
 namespace {
-
-void check_input(PointsView input) {
-  if (input.dim < 2 || input.dim > kMaxDimension)
-    throw InputError("dimension " + std::to_string(input.dim) + " is not supported (drange computes hulls in 2 to " +
-                     std::to_string(kMaxDimension) + " dimensions)");
-  if (input.n >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-    throw InputError(std::to_string(input.n) + " points are more than drange's limit of 2^31 - 2");
-  for (std::size_t i = 0; i < input.n; ++i)
-    for (int k = 0; k < input.dim; ++k) {
-      const double x = input.point(i)[k];
-      if (!std::isfinite(x))
-        throw InputError("point " + std::to_string(i) + ", coordinate " + std::to_string(k) + " is " +
-                         (std::isnan(x) ? "NaN" : "infinite"));
-    }
-}
 
 // A copy of the coordinates scaled by a power of two so that the largest magnitude is below 1:
 // exact, and orientations keep their signs. The filters' error bound then holds (no underflow
@@ -52,7 +38,7 @@ bool scaled_copy(PointsView input, std::vector<double>& coords) {
 }  // namespace
 
 ConvexHull convex_hull(PointsView points) {
-  check_input(points);
+  util::check_points(points, "computes hulls");
   const int d = points.dim;
   std::vector<double> coords;
   const bool filters = scaled_copy(points, coords);
