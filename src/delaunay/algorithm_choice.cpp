@@ -7,6 +7,8 @@
 
 #include "delaunay/incremental/insertion_order.hpp"
 #include "delaunay/search_options.hpp"
+#include "delaunay/search_pipeline.hpp"
+#include "delaunay/simplex_estimate.hpp"
 #include "delaunay/triangulate.hpp"
 #include "drange/errors.hpp"
 
@@ -26,6 +28,9 @@ constexpr std::size_t kSmallestProbed = 4 * kSmallestSample;
 // Twice the work per simplex (kd-tree nodes entered plus points tested) of the direct search
 // on 4096 uniform points in 2D and 3D (4.5 and 6.7).
 double work_limit(int d) { return d == 2 ? 9.0 : 13.0; }
+// The probe's direct search stops at this many times the limit (on points near a cube's faces
+// it would otherwise cost as much as the incremental kernel's whole run).
+constexpr double kBudgetOverLimit = 4.0;
 
 // In 3D, a model of each construction's time per simplex from its counts on the sample, fitted by
 // least squares to both constructions' one-thread times on 4096-point samples of uniform
@@ -64,7 +69,14 @@ bool prefer_incremental(const PointStore& points) {
   options.compute_neighbors = false;
   try {
     const PointsView sample{coords.data(), m, d};
-    const Statistics direct = triangulate(sample, options, SearchOptions{}, Algorithm::direct).stats;
+    // Far beyond the limit the model would choose the kernel too: the run stops there.
+    const auto budget = static_cast<std::uint64_t>(kBudgetOverLimit * work_limit(d) * double(expected_simplices(d, m)));
+    Statistics direct;
+    try {
+      direct = triangulate(sample, options, SearchOptions{}, Algorithm::direct, budget).stats;
+    } catch (const WorkBudgetExceeded&) {
+      return true;
+    }
     if (direct.simplices == 0) return false;
     const double work = double(direct.search_calls + direct.debug.points_tested) / double(direct.simplices);
     if (work <= work_limit(d)) return false;

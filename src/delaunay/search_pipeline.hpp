@@ -38,10 +38,20 @@ struct Lookahead {
 };
 
 // What the searches of the facets that were used add to the statistics.
+// Thrown by the serial loops when a run exceeds SearchTotals::budget (algorithm_choice.cpp's
+// probe, which needs to know only that the work is large).
+struct WorkBudgetExceeded {};
+
 struct SearchTotals {
   engine::SearchCounters counters;
   std::uint64_t exact = 0;   // exact predicate evaluations
   std::uint64_t wasted = 0;  // searches whose facet was closed before its turn (threads > 1)
+  // On one thread: the kd-tree nodes entered plus points tested beyond which the run stops,
+  // throwing WorkBudgetExceeded; 0, none.
+  std::uint64_t budget = 0;
+  void check_budget() const {
+    if (budget != 0 && counters.calls + counters.points_tested > budget) throw WorkBudgetExceeded{};
+  }
   void add(const engine::SearchCounters& c, std::uint64_t exact_evaluations) {
     counters.calls += c.calls;
     counters.points_tested += c.points_tested;

@@ -95,6 +95,7 @@ void search_serially(Frontier<FacetQueue>& frontier, engine::FacetSearch& search
     if (!frontier.take(ids.data(), info, closed)) continue;
     frontier.prefetch_owner(info);
     const std::int32_t apex = search.find_apex(ids.data(), info.sigma, totals.counters);
+    totals.check_budget();
     if (apex >= 0) {
       derive_other_facets(ids.data(), info.sigma, apex, d, derived.data());
       frontier.prefetch_derived(derived.data());
@@ -171,6 +172,7 @@ void search_serially(Frontier<engine::SpatialFacetQueue>& frontier, engine::Face
       }
     }
     if (!taken) continue;
+    totals.check_budget();
     if (apex >= 0) {
       derive_other_facets(facet, info[s].sigma, apex, d, derived.data());
       frontier.prefetch_derived(derived.data());
@@ -200,7 +202,7 @@ void search(Frontier<Queue>& frontier, const engine::FirstFacet& first, const en
 }  // namespace
 
 Triangulation engine::triangulate(PointsView input, const Options& options, const SearchOptions& search_options,
-                                  Algorithm algorithm) {
+                                  Algorithm algorithm, std::uint64_t work_budget) {
   const auto start = Clock::now();
   const std::uint64_t exact_before = geometry::exact_evaluations();
   Triangulation result;
@@ -241,6 +243,7 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
   phase = Clock::now();
   std::vector<std::int32_t>& simplices = result.simplices;
   SearchTotals totals;
+  totals.budget = team.threads() == 1 ? work_budget : 0;
   if (incremental) {
     const engine::IncrementalCounters counters =
         engine::triangulate_incrementally(points, first, result, options.compute_neighbors, options.progress);

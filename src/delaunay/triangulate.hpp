@@ -5,6 +5,8 @@
 // read `search`).
 #pragma once
 
+#include <cstdint>
+
 #include "delaunay/search_options.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/points.hpp"
@@ -13,7 +15,9 @@ namespace drange::engine {
 
 enum class Algorithm { automatic, direct, incremental };
 
+// `work_budget` (direct search, one thread; 0: none): once the kd-tree nodes entered plus the
+// points tested exceed it, the run stops by throwing WorkBudgetExceeded (search_pipeline.hpp).
 Triangulation triangulate(PointsView points, const Options& options, const SearchOptions& search,
-                          Algorithm algorithm = Algorithm::direct);
+                          Algorithm algorithm = Algorithm::direct, std::uint64_t work_budget = 0);
 
 }  // namespace drange::engine
