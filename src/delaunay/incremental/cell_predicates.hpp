@@ -64,12 +64,8 @@ class CellPredicates {
   // is positively oriented, so inside is a negative lifted determinant (geometry::in_sphere).
   bool inside_sphere(std::int32_t c, std::int32_t q) {
     const std::int32_t* v = cells_.vertices(c);
-    for (int i = 0; i <= d_; ++i) {
-      rows_[static_cast<std::size_t>(i)] = points_.point(v[i]);
-      ranks_[static_cast<std::size_t>(i)] = points_.rank(v[i]);
-    }
+    for (int i = 0; i <= d_; ++i) rows_[static_cast<std::size_t>(i)] = points_.point(v[i]);
     rows_[static_cast<std::size_t>(d_ + 1)] = points_.point(q);
-    ranks_[static_cast<std::size_t>(d_ + 1)] = points_.rank(q);
     if (points_.scaled && d_ <= 3) {
       const int s = d_ == 2 ? filtered_lifted_sign<2>() : filtered_lifted_sign<3>();
       if (s != 0) return s < 0;
@@ -79,6 +75,9 @@ class CellPredicates {
     // Double-double first: points within rounding of a sphere, not on it (circles, spheres,
     // rings of a mesh), are decided there; ties go on to the exact stages and the perturbation.
     if (const std::optional<int> s = geometry::refined_lifted_sign(frame, rows_.data() + 1); s && *s != 0) return *s < 0;
+    // The ranks only now: the perturbation needs them, and each is a read far from the cell.
+    for (int i = 0; i <= d_; ++i) ranks_[static_cast<std::size_t>(i)] = points_.rank(v[i]);
+    ranks_[static_cast<std::size_t>(d_ + 1)] = points_.rank(q);
     return geometry::lifted_sign_perturbed(frame, rows_.data() + 1, ranks_.data()) < 0;
   }
 
