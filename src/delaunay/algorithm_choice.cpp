@@ -2,6 +2,7 @@
 #include "delaunay/algorithm_choice.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -39,9 +40,21 @@ constexpr double kBudgetOverLimit = 4.0;
 // three points tested. The incremental kernel: a conflict test costs about twice a step of the
 // walk, and a sign the fast filters leave to the exact stages (near-ties: cospherical points)
 // four conflict tests.
-double direct_cost(const Statistics& s) {
-  return (0.46 * double(s.simplices) + 0.031 * double(s.search_calls) + 0.010 * double(s.debug.points_tested)) /
+// `growth`: how much more search work per simplex the whole input takes than the sample.
+double direct_cost(const Statistics& s, double growth) {
+  return (0.46 * double(s.simplices) + growth * (0.031 * double(s.search_calls) + 0.010 * double(s.debug.points_tested))) /
          double(s.simplices);
+}
+
+double work_per_simplex(const Statistics& s) { return double(s.search_calls + s.debug.points_tested) / double(s.simplices); }
+
+// The search work per simplex of n points over that of m, extrapolated from the sample's (m
+// points) and a quarter of it's: constant on points spread through space, growing as a power of
+// n on surfaces (up to sqrt(n): a ball's band of kd-tree nodes). The exponent is kept within
+// [0, 1/2].
+double work_growth(double at_m, double at_quarter, std::size_t n, std::size_t m) {
+  const double exponent = std::clamp(std::log(at_m / at_quarter) / std::log(4.0), 0.0, 0.5);
+  return std::pow(double(n) / double(m), exponent);
 }
 double incremental_cost(const Statistics& s) {
   return (0.05 * double(s.simplices) + 0.040 * double(s.search_calls) + 0.073 * double(s.debug.points_tested) +
@@ -78,15 +91,18 @@ bool prefer_incremental(const PointStore& points) {
       return true;
     }
     if (direct.simplices == 0) return false;
-    const double work = double(direct.search_calls + direct.debug.points_tested) / double(direct.simplices);
+    const double work = work_per_simplex(direct);
     if (work <= work_limit(d)) return false;
     // The direct search is slow here; in 3D the incremental kernel too, where the points are so
     // near one sphere that its signs need the exact stages (the direct search's sphere shell
-    // decides those in floating point). Both on the sample, by the model. (In 2D those signs
-    // are 3 x 3 determinants, and the kernel stays the faster on a circle.)
+    // decides those in floating point). Both on the sample, by the model, the direct search's
+    // work extrapolated to n from the sample and its first quarter. (In 2D those signs are
+    // 3 x 3 determinants, and the kernel stays the faster on a circle.)
     if (d == 2) return true;
+    const Statistics quarter = triangulate(PointsView{coords.data(), m / 4, d}, options, SearchOptions{}).stats;
+    const double growth = quarter.simplices == 0 ? 1.0 : work_growth(work, work_per_simplex(quarter), n, m);
     const Statistics incremental = triangulate(sample, options, SearchOptions{}, Algorithm::incremental).stats;
-    return direct_cost(direct) > incremental_cost(incremental);
+    return direct_cost(direct, growth) > incremental_cost(incremental);
   } catch (const DegenerateInputError&) {
     // A sample in one hyperplane: most points are (a plateau, a circle and its poles).
     return true;

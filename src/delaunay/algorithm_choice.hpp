@@ -8,8 +8,9 @@
 // random sample of the points (the first rounds of the incremental insertion order), and
 // takes the incremental kernel when the kd-tree nodes entered plus the points tested per
 // simplex exceed twice what uniform points take, unless (in 3D) the kernel, run on the sample
-// too, is slower still by a model of both constructions' costs from their counts (on points
-// near one sphere, whose signs the kernel leaves to the exact stages). The measures are
+// too, is slower still by a model of both constructions' costs from their counts, the search's
+// extrapolated to n from the sample and a quarter of it (on points near one sphere, whose
+// signs the kernel leaves to the exact stages). The measures are
 // counts, not times: the choice, and so the output, is the same on every machine and every
 // thread count.
 // From 4D on the direct search stays: there its exact stages outrun the incremental kernel's
