@@ -69,7 +69,7 @@ class Delaunay(PointSetAttributes):
         seconds_kdtree, seconds_first_facet, seconds_choice,
         seconds_search, seconds_total, peak_rss_bytes; and statistics["debug"], a dict
         of the engine's internal counters (points_tested, candidates, exact_fallbacks,
-        max_open_facets, shell_spheres, wasted_searches), whose meaning follows the
+        max_open_facets, shell_spheres, wasted_searches, unfiltered_tests), whose meaning follows the
         implementation.
 
     The other attributes (convex_hull, vertex_neighbor_vertices, vertex_to_simplex,
