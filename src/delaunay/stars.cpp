@@ -1,5 +1,7 @@
 // delaunay/stars.cpp: drange::delaunay_stars, the stars of given points (local_star.hpp) in the
 // caller's numbering, with the neighbours that the returned simplices have among themselves.
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <map>
@@ -117,6 +119,9 @@ Triangulation delaunay_stars(PointsView input, const std::vector<std::int64_t>& 
   stats.debug.points_tested = counters.points_tested;
   stats.debug.candidates = counters.candidates;
   stats.seconds_total = seconds_since(start);
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  stats.peak_rss_bytes = static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
   if (options.progress) options.progress(stats.simplices);
   return result;
 }
