@@ -13,6 +13,7 @@
 #include "drange/io.hpp"
 #include "drange/svg.hpp"
 #include "exit_codes.hpp"
+#include "only_ids.hpp"
 #include "progress.hpp"
 
 namespace drange::cli {
@@ -21,7 +22,7 @@ namespace {
 const std::vector<OptionSpec> kOptions = {
     {"output", 'o', true}, {"format", 0, true},  {"neighbors", 0, true}, {"svg", 0, true},
     {"circles", 0, false}, {"stats", 0, false}, {"variant", 0, true},   {"threads", 0, true},
-    {"quiet", 'q', false}, {"algorithm", 0, true},
+    {"quiet", 'q', false}, {"algorithm", 0, true}, {"only", 0, true},
 };
 
 int triangulate_file(const std::string& input, const Arguments& arguments) {
@@ -35,11 +36,13 @@ int triangulate_file(const std::string& input, const Arguments& arguments) {
   options.algorithm = algorithm_option(arguments);
   options.threads = threads_option(arguments);
   options.compute_neighbors = arguments.has("neighbors") || format != OutputFormat::Qhull;
+  const bool only = arguments.has("only");
+  const std::vector<std::int64_t> ids = only ? parse_only_ids(arguments.value_or("only", "")) : std::vector<std::int64_t>{};
 
   const PointCloud points = read_points(input);
   expect_svg_dimension(arguments, points.dim);
   options.progress = make_progress_reporter(points.size(), points.dim, quiet);
-  const Triangulation triangulation = delaunay(points, options);
+  const Triangulation triangulation = only ? delaunay_stars(points, ids, options) : delaunay(points, options);
 
   if (!triangulation.duplicates.empty() && !quiet)
     std::cerr << "drange: " << duplicates_message(triangulation.duplicates) << '\n';
@@ -80,6 +83,12 @@ std::string delaunay_help() {
              "                        otherwise qhull, the `qdelaunay i` layout)\n"
              "      --neighbors FILE  also write each simplex's neighbours: the simplex opposite\n"
              "                        vertex k of simplex s is in row s, column k; -1 on the hull\n"
+             "      --only IDS        only the stars of these points: every simplex incident to\n"
+             "                        one of them (the same as in the whole triangulation), found\n"
+             "                        without the rest; IDS is a comma-separated list of zero-based\n"
+             "                        input indices (3,17,42) or @FILE, a file of them; --neighbors\n"
+             "                        then links the simplices written, -1 for any other; a\n"
+             "                        duplicate's index gives the star of the point it copies\n"
              "      --svg FILE        also draw the triangulation (2D) as an SVG picture\n"
              "      --circles         draw the circumcircles too (with --svg)\n"
              "      --stats           print the run's statistics (key=value) to standard error\n"
@@ -135,7 +144,7 @@ int run_delaunay(const std::vector<std::string>& args) {
   if (arguments.positionals.empty() && standard_input_has_points()) return triangulate_file("-", arguments);
   if (arguments.positionals.empty()) {
     // The demonstration writes no files: an output option without INPUT is a mistake.
-    for (const char* option : {"output", "neighbors", "format", "svg", "circles"}) {
+    for (const char* option : {"output", "neighbors", "format", "svg", "circles", "only"}) {
       if (arguments.has(option)) {
         throw UsageError(std::string("--") + option + " needs an INPUT file (without INPUT, a demonstration runs)");
       }

@@ -130,4 +130,20 @@ struct Triangulation {
 // in E^d can have), rather than return a wrong triangulation.
 Triangulation delaunay(PointsView points, const Options& options = {});
 
+// The stars of the points `ids` (zero-based input indices): every simplex of delaunay(points)
+// incident to one of them, each once, and no other, found without the rest of the
+// triangulation (a walk to each point, then a wrapping of its facets alone: the cost after
+// reading and the kd-tree grows with the stars, not with the input). The same simplices as in
+// the full triangulation, as vertex sets; each positively oriented, in the order found (the
+// stars one after the other, in the order of `ids`, a simplex shared by two stars listed once).
+// `neighbors` (Options::compute_neighbors) links the returned simplices among themselves: -1
+// where the neighbour is on the hull or is not returned. An exact duplicate's id gives the star
+// of the point it copies (the duplicate itself is in no simplex; Triangulation::duplicates
+// lists them as delaunay() does). Options::threads speeds up the preparation only;
+// Options::algorithm is checked and has no effect (the stars are always found by the direct
+// search), Options::variant selects the search's steps. Statistics count this run's work:
+// hull_facets is the hull facets through the given points. Throws UsageError naming an id
+// out of range or given twice, and whatever delaunay() throws for the points.
+Triangulation delaunay_stars(PointsView points, const std::vector<std::int64_t>& ids, const Options& options = {});
+
 }  // namespace drange

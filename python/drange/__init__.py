@@ -20,8 +20,9 @@ from ._hull import ConvexHull
 from ._halfspace import HalfspaceIntersection
 from ._voronoi import ClippedCells, Voronoi
 from ._check import check_triangulation
+from ._stars import Stars, delaunay_stars
 from . import interpolate
 
-__all__ = ["ConvexHull", "HalfspaceIntersection", "Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "Error",
+__all__ = ["ConvexHull", "HalfspaceIntersection", "Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "delaunay_stars", "Stars", "Error",
            "DegenerateInputError", "variant_names", "algorithm_names", "interpolate"]
 __version__ = "0.1.0"

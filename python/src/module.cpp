@@ -227,6 +227,16 @@ PYBIND11_MODULE(_drange, m) {
     return triangulated;
   }, py::arg("points"), py::arg("variant"), py::arg("algorithm"), py::arg("threads"), py::arg("progress"));
 
+  m.def("stars", [](Points points, std::vector<std::int64_t> ids, const std::string& variant, int threads) {
+    const PointsView input = points_view(points, "points");
+    PythonProgress reporter{py::none()};
+    const Options options = engine_options(variant, "auto", threads, reporter);
+    auto triangulated = std::make_unique<Triangulated>();
+    triangulated->result = reporter.run([&] { return delaunay_stars(input, ids, options); });
+    triangulated->points = std::move(points);
+    return triangulated;
+  }, py::arg("points"), py::arg("ids"), py::arg("variant"), py::arg("threads"));
+
   m.def("voronoi", [](Points points, const std::string& variant, const std::string& algorithm, int threads,
                       bool cell_volumes, py::object progress) {
     const PointsView input = points_view(points, "points");

@@ -1,0 +1,66 @@
+// delaunay/local_star.hpp: the star of one point (every Delaunay simplex incident to it),
+// found without the rest of the triangulation (drange::delaunay_stars).
+//
+// The direct algorithm needs no global structure: FacetSearch::find_apex closes any Delaunay
+// facet, wherever it lies, into the Delaunay simplex on its open side. So:
+//   1. a first Delaunay simplex: the first facet (first_facet.hpp) closed by the search;
+//   2. a walk toward the point p: from a simplex that does not have p as a vertex, cross a
+//      facet whose hyperplane strictly separates the simplex from p (exact orientation), by
+//      searching that facet's other side. Every distinct input point is a vertex of the
+//      triangulation, and no input point lies in a closed simplex other than as its vertex,
+//      so such a facet exists until p is reached; the walk cannot cycle, because the
+//      triangulation under the perturbation is a regular one (Edelsbrunner's acyclicity
+//      theorem for the in-front relation seen from any point);
+//   3. the paper's wrapping (step 3), restricted to the star: each simplex found opens its d
+//      facets through p (the facet opposite p leads out of the star and is ignored), closes
+//      those already open, and each open facet is searched once.
+// Every simplex is one that the full construction finds: find_apex is exact and decides by the
+// same perturbation, so the star is exactly the full triangulation's, vertex set for vertex set.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "delaunay/facet_search.hpp"
+#include "delaunay/first_facet.hpp"
+#include "delaunay/point_store.hpp"
+
+namespace drange::engine {
+
+// A simplex as the search finds it: its facet's sorted ids, that facet's open side (where the
+// apex lies) and the apex. Its vertices, positively oriented, are the facet's ids with the
+// first two exchanged when sigma < 0, then the apex (as the full construction records it).
+struct FoundSimplex {
+  std::vector<std::int32_t> facet;
+  int sigma = 1;
+  std::int32_t apex = -1;
+};
+
+class StarWrapper {
+ public:
+  // Closes `first` into the first simplex; throws InternalError when it is on the hull on
+  // both sides (cannot be: the points span E^d).
+  StarWrapper(const PointStore& points, FacetSearch& search, const FirstFacet& first);
+
+  // Appends to `rows` (d+1 engine ids per simplex, positively oriented) every simplex of the
+  // star of point `p` (an engine id), each once, in the order the wrapping finds them.
+  // Counts into `counters` the search's work and into `hull_facets` the star's facets on the
+  // hull. The walk to the next point starts from a simplex of this star.
+  void star(std::int32_t p, std::vector<std::int32_t>& rows, SearchCounters& counters, std::vector<std::int32_t>& hull_facets);
+
+ private:
+  void walk_to(std::int32_t p, SearchCounters& counters);
+  // The d+1 facets of `s` (facet f omits vertex f of the positively oriented simplex), sorted
+  // ids into facets_ (d per facet), each one's outward side into sides_.
+  void facets_of(const FoundSimplex& s);
+  void vertices_of(const FoundSimplex& s, std::int32_t* out) const;
+
+  const PointStore& points_;
+  FacetSearch& search_;
+  int d_;
+  FoundSimplex current_;  // the walk's simplex: the last star's first simplex
+  std::vector<std::int32_t> facets_;
+  std::vector<int> sides_;
+};
+
+}  // namespace drange::engine

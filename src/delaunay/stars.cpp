@@ -1,0 +1,129 @@
+// delaunay/stars.cpp: drange::delaunay_stars, the stars of given points (local_star.hpp) in the
+// caller's numbering, with the neighbours that the returned simplices have among themselves.
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "delaunay/facet_search.hpp"
+#include "delaunay/first_facet.hpp"
+#include "delaunay/local_star.hpp"
+#include "delaunay/prepare_points.hpp"
+#include "delaunay/search_options.hpp"
+#include "delaunay/team.hpp"
+#include "drange/delaunay.hpp"
+#include "drange/errors.hpp"
+
+namespace drange {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Throws UsageError for an id outside the input or given twice, naming it.
+void check_ids(const std::vector<std::int64_t>& ids, std::size_t n) {
+  std::vector<std::int64_t> sorted(ids);
+  for (const std::int64_t id : ids)
+    if (id < 0 || static_cast<std::uint64_t>(id) >= n)
+      throw UsageError("point id " + std::to_string(id) + " is out of range: the input has " + std::to_string(n) +
+                       " points, ids 0 to " + std::to_string(n - 1));
+  std::sort(sorted.begin(), sorted.end());
+  const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+  if (twice != sorted.end()) throw UsageError("point id " + std::to_string(*twice) + " is given twice");
+}
+
+// Neighbour k of row s: the returned row sharing the facet opposite vertex k, else -1.
+std::vector<std::int32_t> neighbours_among(const std::vector<std::int32_t>& rows, int d) {
+  const auto width = static_cast<std::size_t>(d + 1);
+  std::vector<std::int32_t> neighbors(rows.size(), -1);
+  std::map<std::vector<std::int32_t>, std::size_t> seen;  // facet -> row * width + k
+  std::vector<std::int32_t> facet;
+  for (std::size_t at = 0; at < rows.size(); ++at) {
+    const std::size_t row = at / width, k = at % width;
+    facet.clear();
+    for (std::size_t i = 0; i < width; ++i)
+      if (i != k) facet.push_back(rows[row * width + i]);
+    std::sort(facet.begin(), facet.end());
+    const auto [it, inserted] = seen.emplace(facet, at);
+    if (inserted) continue;
+    neighbors[at] = static_cast<std::int32_t>(it->second / width);
+    neighbors[it->second] = static_cast<std::int32_t>(row);
+  }
+  return neighbors;
+}
+
+}  // namespace
+
+Triangulation delaunay_stars(PointsView input, const std::vector<std::int64_t>& ids, const Options& options) {
+  const auto start = Clock::now();
+  const engine::SearchOptions search_options = engine::search_variant(options.variant);
+  if (options.algorithm != "auto" && options.algorithm != "direct" && options.algorithm != "incremental")
+    throw UsageError("unknown algorithm '" + options.algorithm + "' (expected one of: " + algorithm_names() + ")");
+  if (options.threads < 0)
+    throw UsageError("threads must be 0 (all hardware threads) or a positive count, got " + std::to_string(options.threads));
+  Triangulation result;
+  result.dim = input.dim;
+  result.num_points = input.n;
+  Statistics& stats = result.stats;
+  stats.points = input.n;
+  stats.algorithm = "direct";
+  stats.threads = static_cast<std::size_t>(engine::resolve_threads(options.threads));
+  check_ids(ids, input.n);
+  engine::Team team(static_cast<int>(stats.threads));
+  const engine::PointStore points =
+      engine::prepare_points(input, engine::search_leaf_size(input.dim), result.duplicates, team, search_options);
+  const int d = points.dim;
+  stats.distinct_points = static_cast<std::size_t>(points.size);
+  stats.seconds_kdtree = seconds_since(start);
+
+  auto phase = Clock::now();
+  const engine::FirstFacet first = engine::find_first_facet(points, team);
+  stats.seconds_first_facet = seconds_since(phase);
+
+  phase = Clock::now();
+  // The engine id of each input index; a duplicate answers for the point it copies.
+  std::vector<std::int32_t> engine_id(input.n, -1);
+  for (std::int32_t id = 0; id < points.size; ++id) engine_id[static_cast<std::size_t>(points.input_index[static_cast<std::size_t>(id)])] = id;
+  for (const Duplicate& dup : result.duplicates)
+    engine_id[static_cast<std::size_t>(dup.index)] = engine_id[static_cast<std::size_t>(dup.original)];
+
+  engine::FacetSearch search(points, search_options);
+  engine::StarWrapper wrapper(points, search, first);
+  engine::SearchCounters counters;
+  std::vector<std::int32_t> star, hull, rows;
+  std::set<std::vector<std::int32_t>> kept, hull_facets;  // sorted vertex sets, sorted facets
+  const auto width = static_cast<std::size_t>(d + 1);
+  std::vector<std::int32_t> key;
+  for (const std::int64_t id : ids) {
+    star.clear();
+    wrapper.star(engine_id[static_cast<std::size_t>(id)], star, counters, hull);
+    for (std::size_t s = 0; s < star.size(); s += width) {
+      key.assign(star.begin() + static_cast<std::ptrdiff_t>(s), star.begin() + static_cast<std::ptrdiff_t>(s + width));
+      std::sort(key.begin(), key.end());
+      if (kept.insert(key).second) rows.insert(rows.end(), star.begin() + static_cast<std::ptrdiff_t>(s), star.begin() + static_cast<std::ptrdiff_t>(s + width));
+    }
+  }
+  for (std::size_t f = 0; f < hull.size(); f += static_cast<std::size_t>(d))
+    hull_facets.emplace(hull.begin() + static_cast<std::ptrdiff_t>(f), hull.begin() + static_cast<std::ptrdiff_t>(f) + d);
+  for (std::int32_t& v : rows) v = points.input_index[static_cast<std::size_t>(v)];
+  if (options.compute_neighbors) result.neighbors = neighbours_among(rows, d);
+  result.simplices = std::move(rows);
+  stats.seconds_search = seconds_since(phase);
+  stats.simplices = result.size();
+  stats.hull_facets = hull_facets.size();
+  stats.search_calls = counters.calls;
+  stats.debug.points_tested = counters.points_tested;
+  stats.debug.candidates = counters.candidates;
+  stats.seconds_total = seconds_since(start);
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  stats.peak_rss_bytes = static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
+  if (options.progress) options.progress(stats.simplices);
+  return result;
+}
+
+}  // namespace drange
