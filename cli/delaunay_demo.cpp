@@ -34,6 +34,7 @@ void print_summary(const Statistics& stats) {
   print_row("simplices", std::to_string(stats.simplices));
   print_row("hull facets", std::to_string(stats.hull_facets));
   print_row("threads", std::to_string(stats.threads));
+  print_row("algorithm", stats.algorithm + format("  (chosen in %.3f s; --algorithm)", stats.seconds_choice));
   print_row("kd-tree", format("%.3f s", stats.seconds_kdtree));
   print_row("first facet", format("%.3f s", stats.seconds_first_facet));
   print_row("search", format("%.3f s", stats.seconds_search) + "  (with the neighbours)");
