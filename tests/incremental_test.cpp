@@ -199,3 +199,25 @@ TEST(Incremental, ProgressKeepsItsContract) {
 }
 
 }  // namespace
+
+namespace {
+
+// Options::algorithm "auto": a count-based probe, so its choice is the same everywhere. Points
+// near a cube's faces make the sample's direct search exceed its budget; uniform points stay
+// below the limit; either way the simplices are the direct search's.
+TEST(Incremental, AutoChoosesByTheSearchsWorkOnASample) {
+  const std::vector<std::pair<PointCloud, const char*>> cases = {
+      {cube_faces(20000, 1e-10, 6), "incremental"},
+      {drange::generate_points(Distribution::Uniform, 20000, 3, 7), "direct"},
+      {drange::generate_points(Distribution::Uniform, 20000, 2, 8), "direct"},
+      {cube_faces(5000, 1e-10, 9), "direct"},  // below the probe's smallest input
+  };
+  for (const auto& [points, expected] : cases) {
+    const Triangulation chosen = triangulate(points, "auto");
+    EXPECT_EQ(chosen.stats.algorithm, expected) << points.size() << " points in " << points.dim << "D";
+    EXPECT_EQ(canonical(chosen), canonical(triangulate(points, "direct")));
+    EXPECT_GE(chosen.stats.seconds_choice, 0.0);
+  }
+}
+
+}  // namespace
