@@ -14,6 +14,7 @@
 #include "drange/svg.hpp"
 #include "drange/voronoi.hpp"
 #include "exit_codes.hpp"
+#include "only_ids.hpp"
 #include "progress.hpp"
 
 namespace drange::cli {
@@ -23,7 +24,24 @@ const std::vector<OptionSpec> kOptions = {
     {"output", 'o', true}, {"format", 0, true},    {"ridges", 0, true}, {"cells", 0, true},
     {"box", 0, true},      {"svg", 0, true},       {"circles", 0, false}, {"no-volumes", 0, false},
     {"stats", 0, false},   {"variant", 0, true},   {"threads", 0, true}, {"algorithm", 0, true}, {"quiet", 'q', false},
+    {"only", 0, true},
 };
+
+// --only: the cells of the given points, from their stars (drange::voronoi_cells).
+int cells_of_file(const PointCloud& points, const std::vector<std::int64_t>& ids, const VoronoiOptions& options,
+                  const Arguments& arguments) {
+  const std::string output = arguments.value_or("output", "-");
+  const OutputFormat format = arguments.has("format") ? output_format_from_name(arguments.value_or("format", ""))
+                                                      : output_format_from_path(output, OutputFormat::Qhull);
+  const Voronoi diagram = voronoi_cells(points, ids, options);
+  write_voronoi(output, format, points, diagram, nullptr);
+  if (arguments.has("ridges"))
+    write_file_atomically(arguments.value_or("ridges", ""), [&](std::ostream& out) { write_qvoronoi_fv(out, diagram); });
+  if (arguments.has("stats"))
+    std::cerr << "voronoi_vertices=" << diagram.num_vertices() << " ridges=" << diagram.num_ridges()
+              << " regions=" << diagram.regions.size() << '\n';
+  return kExitSuccess;
+}
 
 bool needs_cells(OutputFormat format) { return format == OutputFormat::Vtu || format == OutputFormat::Off; }
 
@@ -41,6 +59,17 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
   if (arguments.has("box") && !arguments.has("cells") && format == OutputFormat::Qhull)
     throw UsageError("--box clips the cells, which Qhull's layout does not hold: add --cells FILE, or choose "
                      "--format json, npz, vtu or off");
+  // --only holds some cells, not the whole diagram: only the layouts that name each region's
+  // point (json, npz) can hold it, and there is nothing to clip or draw.
+  const bool only = arguments.has("only");
+  if (only) {
+    if (format != OutputFormat::Json && format != OutputFormat::Npz)
+      throw UsageError("--only writes json or npz (the other layouts need every point's cell): choose --format json "
+                       "or npz, or an output file ending in .json or .npz");
+    for (const char* option : {"cells", "box", "svg"})
+      if (arguments.has(option)) throw UsageError(std::string("--") + option + " cannot be used with --only");
+  }
+  const std::vector<std::int64_t> ids = only ? parse_only_ids(arguments.value_or("only", "")) : std::vector<std::int64_t>{};
   const bool quiet = arguments.has("quiet");
   VoronoiOptions options;
   options.delaunay.variant = variant_option(arguments);
@@ -50,6 +79,7 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
 
   const PointCloud points = read_points(input);
   expect_svg_dimension(arguments, points.dim);
+  if (only) return cells_of_file(points, ids, options, arguments);
   options.delaunay.progress = make_progress_reporter(points.size(), points.dim, quiet);
   const Triangulation triangulation = delaunay(points, options.delaunay);
   if (!triangulation.duplicates.empty() && !quiet)
@@ -107,6 +137,12 @@ std::string voronoi_help() {
          "                        for --cells, or the cells in json, npz, vtu and off output\n"
          "      --svg FILE        also draw the points, triangulation and diagram (2D) as SVG\n"
          "      --circles         draw the circumcircles too (with --svg)\n"
+         "      --only IDS        only the cells of these points (zero-based input indices,\n"
+         "                        3,17,42, or @FILE, a file of them), from their Delaunay stars\n"
+         "                        without the rest of the triangulation; json or npz output\n"
+         "                        only (the qhull layout needs every point's region), no\n"
+         "                        --cells, --box or --svg; point_region is -1 for the other\n"
+         "                        points, and the ridges are those of the given points\n"
          "      --no-volumes      skip the volumes of the bounded cells (costly for d >= 6)\n"
          "      --stats           print the run's statistics (key=value) to standard error\n"
          "      --variant NAME    an ablation variant of the Delaunay search, for measurements\n"

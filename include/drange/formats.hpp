@@ -83,7 +83,7 @@ void write_delaunay_npz(std::ostream& out, const Triangulation& triangulation);
 //   ridge_points                        (num_ridges, 2) int32
 //   ridge_vertices, ridge_vertices_offsets   ragged, -1 for the point at infinity
 //   regions, regions_offsets            ragged, -1 for the point at infinity
-//   point_region                        (npoints,) int32
+//   point_region                        (npoints,) int32, -1 for a cell not held
 //   volumes                             (num_regions,) float64, inf when unbounded; only
 //                                       when the diagram has volumes
 // With `cells` (may be null), also the clipped cells (ClippedCells' fields):
@@ -108,7 +108,8 @@ void write_delaunay_json(std::ostream& out, const Triangulation& triangulation);
 //   {"ndim", "npoints", "vertices": [[x, y], ...], "ridge_points": [[p, q], ...],
 //    "ridge_vertices": [[...], ...], "regions": [[...], ...], "point_region": [...],
 //    "volumes": [...]}
-// -1 in ridge_vertices and regions is the point at infinity. JSON has no infinity: an
+// -1 in ridge_vertices and regions is the point at infinity; -1 in point_region a point whose
+// cell the diagram does not hold (drange::voronoi_cells). JSON has no infinity: an
 // unbounded cell's volume (and any other non-finite number) is written as null.
 // "volumes" only when the diagram has them. With `cells` (may be null), also
 //   "clipped_cells": {"box": {"lower": [...], "upper": [...]},
@@ -156,7 +157,8 @@ void write_cells_off(std::ostream& out, const ClippedCells& cells);
 // plus the point at infinity, input points); then the point at infinity written as
 // "-10.101" d times, as Qhull does; then one line per vertex; then one line per input point
 // "k v1 ... vk", its region's vertex indices shifted by one so that 0 is the point at
-// infinity. An exact duplicate repeats the region of the point it copies.
+// infinity. An exact duplicate repeats the region of the point it copies. Throws UsageError
+// for a diagram without every point's region (drange::voronoi_cells).
 void write_qvoronoi_o(std::ostream& out, const Voronoi& diagram);
 
 // The layout of `qvoronoi Fv`: line 1 the number of ridges; then one line per ridge

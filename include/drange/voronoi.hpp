@@ -102,6 +102,21 @@ Voronoi voronoi(PointsView points, const VoronoiOptions& options = {});
 // negative thread count.
 Voronoi voronoi(PointsView points, const Triangulation& triangulation, const VoronoiOptions& options = {});
 
+// The cells of the points `ids` only (zero-based input indices), computed from their Delaunay
+// stars (drange::delaunay_stars) without the rest of the triangulation. The result is the
+// whole diagram restricted to these cells: `regions`, `region_point` and `volumes` hold one
+// region per distinct cell asked for (a duplicate's id gives its original's cell), each equal to
+// the whole diagram's cell (the same vertices, boundedness and volume, up to the rounding of the
+// centres and of the volume's sum); `point_region` is -1 for a point whose cell was not asked
+// for; `vertices` are those of the cells, `ridge_points`/`ridge_vertices` the ridges with a
+// point of `ids` at one end; `simplex_vertex` is empty. Within a cell the vertex ids are
+// distinct; a Voronoi vertex shared by two asked-for cells has one id, except when the simplices
+// of its (cospherical) sphere around the two points are not connected through the stars'
+// simplices: then each cell names its own copy. docs/algorithm.md ("Local stars") says why the
+// cells are right.
+// Throws as drange::delaunay_stars does.
+Voronoi voronoi_cells(PointsView points, const std::vector<std::int64_t>& ids, const VoronoiOptions& options = {});
+
 // Clips every cell of the diagram to the box (d = 2 or 3). Throws UsageError for another
 // dimension or a box that is empty, not finite, or of the wrong dimension.
 ClippedCells clip_cells(PointsView points, const Voronoi& diagram, const Box& box);

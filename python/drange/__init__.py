@@ -21,8 +21,10 @@ from ._halfspace import HalfspaceIntersection
 from ._voronoi import ClippedCells, Voronoi
 from ._check import check_triangulation
 from ._stars import Stars, delaunay_stars
+from ._voronoi_cells import VoronoiCells, voronoi_cells
 from . import interpolate
 
-__all__ = ["ConvexHull", "HalfspaceIntersection", "Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "delaunay_stars", "Stars", "Error",
+__all__ = ["ConvexHull", "HalfspaceIntersection", "Delaunay", "Voronoi", "ClippedCells", "check_triangulation", "delaunay_stars", "Stars",
+           "voronoi_cells", "VoronoiCells", "Error",
            "DegenerateInputError", "variant_names", "algorithm_names", "interpolate"]
 __version__ = "0.1.0"

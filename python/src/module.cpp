@@ -255,6 +255,19 @@ PYBIND11_MODULE(_drange, m) {
   }, py::arg("points"), py::arg("variant"), py::arg("algorithm"), py::arg("threads"), py::arg("cell_volumes"),
      py::arg("progress"));
 
+  m.def("voronoi_cells", [](Points points, std::vector<std::int64_t> ids, const std::string& variant, int threads,
+                            bool cell_volumes) {
+    const PointsView input = points_view(points, "points");
+    PythonProgress reporter{py::none()};
+    VoronoiOptions options;
+    options.delaunay = engine_options(variant, "auto", threads, reporter);
+    options.cell_volumes = cell_volumes;
+    auto diagram = std::make_unique<Diagram>();
+    diagram->result = reporter.run([&] { return voronoi_cells(input, ids, options); });
+    diagram->points = std::move(points);
+    return diagram;
+  }, py::arg("points"), py::arg("ids"), py::arg("variant"), py::arg("threads"), py::arg("cell_volumes"));
+
   m.def("default_clip_box", [](Points points, double margin) {
     const Box box = default_clip_box(points_view(points, "points"), margin);
     return py::make_tuple(py::array_t<double>(static_cast<py::ssize_t>(box.lower.size()), box.lower.data()),

@@ -20,7 +20,7 @@ std::vector<std::int32_t> region_points(const Voronoi& diagram) {
   std::vector<std::int32_t> points(diagram.regions.size(), -1);
   // Backwards, so that the first point naming a region is the one kept.
   for (std::size_t i = diagram.point_region.size(); i-- > 0;) {
-    points[static_cast<std::size_t>(diagram.point_region[i])] = static_cast<std::int32_t>(i);
+    if (diagram.point_region[i] >= 0) points[static_cast<std::size_t>(diagram.point_region[i])] = static_cast<std::int32_t>(i);
   }
   return points;
 }

@@ -74,8 +74,9 @@ void check_voronoi(const Voronoi& diagram, const char* writer) {
     fail(writer, "point_region has " + std::to_string(diagram.point_region.size()) + " entries for " +
                      std::to_string(diagram.num_points) + " points");
   }
+  // -1: a point whose cell was not computed (drange::voronoi_cells).
   for (std::int32_t region : diagram.point_region) {
-    if (region < 0 || static_cast<std::size_t>(region) >= diagram.regions.size()) {
+    if (region < -1 || (region >= 0 && static_cast<std::size_t>(region) >= diagram.regions.size())) {
       fail(writer,
            "point_region names region " + std::to_string(region) + " of " + std::to_string(diagram.regions.size()));
     }

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <ostream>
 
+#include "drange/errors.hpp"
 #include "drange/formats.hpp"
 #include "io/output_buffer.hpp"
 #include "io/result_checks.hpp"
@@ -41,6 +42,10 @@ void put_coordinates(OutputBuffer& out, const double* point, int dim) {
 
 void write_qvoronoi_o(std::ostream& stream, const Voronoi& diagram) {
   io::check_voronoi(diagram, "write_qvoronoi_o");
+  for (std::int32_t region : diagram.point_region)
+    if (region < 0)
+      throw UsageError("write_qvoronoi_o: the layout needs every point's region, and this diagram (voronoi_cells) "
+                       "holds only some; write it as json or npz");
   OutputBuffer out(stream);
   out.put_number(diagram.dim);
   out.put('\n');
