@@ -32,6 +32,18 @@ def check_scipy_arguments(furthest_site, incremental, qhull_options):
     # decision is exact and the output is always simplicial.
 
 
+def as_point_ids(ids):
+    """The ids of delaunay_stars and voronoi_cells as an int64 array; ValueError naming a bad one
+    (the range and repeats are the engine's to check)."""
+    array = np.asarray(ids)
+    if array.ndim != 1:
+        raise ValueError(f"ids must be a 1-D sequence of point indices; got shape {array.shape}")
+    if array.size and not np.issubdtype(array.dtype, np.integer):
+        bad = next((x for x in array.tolist() if not (isinstance(x, int) and not isinstance(x, bool))), array[0])
+        raise ValueError(f"point id {bad!r} is not an integer index")
+    return array.astype(np.int64)
+
+
 def check_options(variant, threads, algorithm="auto"):
     names = _drange.variant_names
     if not isinstance(variant, str):

@@ -2,7 +2,7 @@
 import numpy as np
 
 from . import _drange
-from ._points import as_points, check_options
+from ._points import as_points, check_options, as_point_ids
 
 
 class Stars:
@@ -52,12 +52,6 @@ def delaunay_stars(points, ids, *, threads=0, variant="full"):
     """
     points = as_points(points)
     check_options(variant, threads)
-    array = np.asarray(ids)
-    if array.ndim != 1:
-        raise ValueError(f"ids must be a 1-D sequence of point indices; got shape {array.shape}")
-    if array.size and not np.issubdtype(array.dtype, np.integer):
-        bad = next((x for x in array.tolist() if not (isinstance(x, int) and not isinstance(x, bool))), array[0])
-        raise ValueError(f"point id {bad!r} is not an integer index")
-    array = array.astype(np.int64)
+    array = as_point_ids(ids)
     core = _drange.stars(points, array.tolist(), variant, int(threads))
     return Stars(points, array, core)
