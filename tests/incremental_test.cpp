@@ -216,7 +216,6 @@ TEST(Incremental, AutoChoosesByTheSearchsWorkOnASample) {
     const Triangulation chosen = triangulate(points, "auto");
     EXPECT_EQ(chosen.stats.algorithm, expected) << points.size() << " points in " << points.dim << "D";
     EXPECT_EQ(canonical(chosen), canonical(triangulate(points, "direct")));
-    EXPECT_GE(chosen.stats.seconds_choice, 0.0);
   }
 }
 

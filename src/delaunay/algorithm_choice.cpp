@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <vector>
 
-#include "delaunay/incremental/insertion_order.hpp"
 #include "delaunay/search_options.hpp"
 #include "delaunay/search_pipeline.hpp"
 #include "delaunay/simplex_estimate.hpp"
@@ -64,13 +63,15 @@ double incremental_cost(const Statistics& s) {
 
 }  // namespace
 
-bool prefer_incremental(const PointStore& points) {
+bool worth_probing(const PointStore& points) {
+  return points.dim <= 3 && static_cast<std::size_t>(points.size) >= kSmallestProbed;
+}
+
+bool prefer_incremental(const PointStore& points, const std::vector<std::int32_t>& order) {
   const int d = points.dim;
   const auto n = static_cast<std::size_t>(points.size);
-  if (d > 3 || n < kSmallestProbed) return false;
   const std::size_t m = std::clamp(n / kSampleShare, kSmallestSample, kLargestSample);
   // The coarsest rounds of the insertion order: a random sample drawn from the ranks.
-  const std::vector<std::int32_t> order = insertion_order(points);
   std::vector<double> coords;
   coords.reserve(m * static_cast<std::size_t>(d));
   for (std::size_t i = 0; i < m; ++i) {

@@ -17,11 +17,19 @@
 // generic predicates on the inputs full of ties where the search is also slow.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "delaunay/point_store.hpp"
 
 namespace drange::engine {
 
-// True when Options::algorithm "auto" should run the incremental kernel on these points.
-bool prefer_incremental(const PointStore& points);
+// Whether "auto" probes these points at all (2D and 3D, enough of them); if not, it runs the
+// direct search.
+bool worth_probing(const PointStore& points);
+// True when Options::algorithm "auto" should run the incremental kernel on these points, for
+// which worth_probing holds. `order`: their insertion order (insertion_order.hpp), whose
+// first points are the sample.
+bool prefer_incremental(const PointStore& points, const std::vector<std::int32_t>& order);
 
 }  // namespace drange::engine

@@ -31,6 +31,7 @@
 #include "delaunay/first_facet.hpp"
 #include "delaunay/frontier.hpp"
 #include "delaunay/incremental/bowyer_watson.hpp"
+#include "delaunay/incremental/insertion_order.hpp"
 #include "delaunay/prepare_points.hpp"
 #include "delaunay/search_pipeline.hpp"
 #include "delaunay/team.hpp"
@@ -85,6 +86,9 @@ bool spatial_order(FacetOrder order, int d) {
 constexpr std::uint64_t kPrefetchAhead = 4;
 
 // One thread, FIFO: each facet searched when its turn comes, taken out of the queue then.
+// kBudgeted: the run stops at SearchTotals::budget (the choice's probe); a template argument,
+// so that every other run's loop carries no test of it.
+template <bool kBudgeted>
 void search_serially(Frontier<FacetQueue>& frontier, engine::FacetSearch& search, int d, SearchTotals& totals) {
   std::vector<std::int32_t> ids(static_cast<std::size_t>(d)), derived(derived_block_size(d));
   FacetInfo info{};
@@ -95,7 +99,7 @@ void search_serially(Frontier<FacetQueue>& frontier, engine::FacetSearch& search
     if (!frontier.take(ids.data(), info, closed)) continue;
     frontier.prefetch_owner(info);
     const std::int32_t apex = search.find_apex(ids.data(), info.sigma, totals.counters);
-    totals.check_budget();
+    if constexpr (kBudgeted) totals.check_budget();
     if (apex >= 0) {
       derive_other_facets(ids.data(), info.sigma, apex, d, derived.data());
       frontier.prefetch_derived(derived.data());
@@ -121,8 +125,9 @@ bool is_derived(const std::int32_t* facet, std::uint32_t hash, const std::int32_
 // simplex is recorded one turn late: the next facet's turn (its table lookup and search) runs
 // first, while the table slots that the recording reads (prefetched when the simplex's facets
 // were derived) arrive from memory. The two touch different facets of the table, except when
-// the next facet is one of the simplex's: then the recording comes first, as before. The
-// turns, and so the output, are unchanged.
+// the next facet is one of the simplex's: then the recording comes first. The turns, and so
+// the output, are those of a recording in turn. kBudgeted: as above.
+template <bool kBudgeted>
 void search_serially(Frontier<engine::SpatialFacetQueue>& frontier, engine::FacetSearch& search, int d, Lookahead lookahead,
                      SearchTotals& totals) {
   const std::size_t ahead = lookahead.size;
@@ -172,7 +177,7 @@ void search_serially(Frontier<engine::SpatialFacetQueue>& frontier, engine::Face
       }
     }
     if (!taken) continue;
-    totals.check_budget();
+    if constexpr (kBudgeted) totals.check_budget();
     if (apex >= 0) {
       derive_other_facets(facet, info[s].sigma, apex, d, derived.data());
       frontier.prefetch_derived(derived.data());
@@ -189,8 +194,14 @@ void search(Frontier<Queue>& frontier, const engine::FirstFacet& first, const en
   frontier.open_first(first);
   if (team.threads() == 1) {
     engine::FacetSearch search(points, options);
-    if constexpr (std::is_same_v<Queue, FacetQueue>) search_serially(frontier, search, points.dim, totals);
-    else search_serially(frontier, search, points.dim, lookahead, totals);
+    const bool budgeted = totals.budget != 0;
+    if constexpr (std::is_same_v<Queue, FacetQueue>) {
+      if (budgeted) search_serially<true>(frontier, search, points.dim, totals);
+      else search_serially<false>(frontier, search, points.dim, totals);
+    } else {
+      if (budgeted) search_serially<true>(frontier, search, points.dim, lookahead, totals);
+      else search_serially<false>(frontier, search, points.dim, lookahead, totals);
+    }
   } else {
     frontier.mark_closures();
     SearchPipeline<Queue> pipeline(points, options, team.threads(), frontier, lookahead);
@@ -235,8 +246,12 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
   const std::uint64_t exact_setup = geometry::exact_evaluations() - exact_before + team.helper_exact_evaluations();
 
   phase = Clock::now();
+  if (algorithm == Algorithm::automatic && !engine::worth_probing(points)) algorithm = Algorithm::direct;
+  // The insertion order serves both the choice's sample and the incremental kernel.
+  const std::vector<std::int32_t> order =
+      algorithm == Algorithm::direct ? std::vector<std::int32_t>{} : engine::insertion_order(points);
   const bool incremental = algorithm == Algorithm::incremental ||
-                           (algorithm == Algorithm::automatic && engine::prefer_incremental(points));
+                           (algorithm == Algorithm::automatic && engine::prefer_incremental(points, order));
   stats.algorithm = incremental ? "incremental" : "direct";
   stats.seconds_choice = seconds_since(phase);
 
@@ -246,7 +261,7 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
   totals.budget = team.threads() == 1 ? work_budget : 0;
   if (incremental) {
     const engine::IncrementalCounters counters =
-        engine::triangulate_incrementally(points, first, result, options.compute_neighbors, options.progress);
+        engine::triangulate_incrementally(points, first, order, result, options.compute_neighbors, options.progress);
     totals.counters.calls = counters.walk_steps;
     totals.counters.points_tested = counters.conflict_tests;
     stats.debug.unfiltered_tests = counters.unfiltered_tests;

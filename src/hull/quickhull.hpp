@@ -47,7 +47,7 @@ class Quickhull {
   struct Sets {
     // Undecided points above the facet, d+1 doubles each: the id, then a copy of the
     // coordinates, so that the passes over a dead facet's points read memory in order (reading
-    // them by id was most of a run's cache misses).
+    // them by id would make most of a run's cache misses).
     std::vector<double> outside;
     std::vector<std::int32_t> coplanar;  // decided points on the facet's hyperplane
     std::int32_t farthest = -1;

@@ -9,7 +9,6 @@
 
 #include "delaunay/incremental/cell_complex.hpp"
 #include "delaunay/incremental/cell_predicates.hpp"
-#include "delaunay/incremental/insertion_order.hpp"
 #include "drange/errors.hpp"
 
 namespace drange::engine {
@@ -128,7 +127,6 @@ class Insertion {
     created_.clear();
     for (const auto& [c, k] : boundary_) {
       const std::int32_t n = cells_.create();
-      ++counters_.cells_created;
       std::int32_t* v = cells_.vertices(n);
       std::copy(cells_.vertices(c), cells_.vertices(c) + width_, v);
       v[k] = q;
@@ -216,10 +214,10 @@ std::vector<std::int32_t> first_simplex(const PointStore& points, const FirstFac
 
 }  // namespace
 
-IncrementalCounters triangulate_incrementally(const PointStore& points, const FirstFacet& first, Triangulation& result,
+IncrementalCounters triangulate_incrementally(const PointStore& points, const FirstFacet& first,
+                                              const std::vector<std::int32_t>& order, Triangulation& result,
                                               bool record_neighbors, const std::function<void(std::size_t)>& progress) {
   IncrementalCounters counters;
-  const std::vector<std::int32_t> order = insertion_order(points);
   const std::vector<std::int32_t> start = first_simplex(points, first, order);
   Insertion insertion(points, counters);
   insertion.start(start.data());

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "delaunay/first_facet.hpp"
 #include "delaunay/point_store.hpp"
@@ -23,14 +24,15 @@ namespace drange::engine {
 struct IncrementalCounters {
   std::uint64_t walk_steps = 0;      // cells the walks entered
   std::uint64_t conflict_tests = 0;  // cells tested for conflict
-  std::uint64_t cells_created = 0;
   std::uint64_t unfiltered_tests = 0;  // orientations and conflict tests the fast filters left undecided
 };
 
 // Fills result.simplices (positively oriented, in `points`' ids), result.neighbors (when
 // `record_neighbors`; -1 on the hull) and result.stats.hull_facets. `first`: a hull facet of
-// the points (find_first_facet), the start of the first simplex. `progress` as in Options.
-IncrementalCounters triangulate_incrementally(const PointStore& points, const FirstFacet& first, Triangulation& result,
+// the points (find_first_facet), the start of the first simplex. `order`: every point id once,
+// insertion_order(points). `progress` as in Options.
+IncrementalCounters triangulate_incrementally(const PointStore& points, const FirstFacet& first,
+                                              const std::vector<std::int32_t>& order, Triangulation& result,
                                               bool record_neighbors, const std::function<void(std::size_t)>& progress);
 
 }  // namespace drange::engine
