@@ -6,6 +6,7 @@
 #include "drange/errors.hpp"
 #include "drange/formats.hpp"
 #include "drange/hull.hpp"
+#include "drange/incremental.hpp"
 #include "drange/generate.hpp"
 #include "drange/io.hpp"
 #include "drange/locate.hpp"

@@ -80,7 +80,7 @@ bool strictly_inside(PointsView points, const std::vector<std::int32_t>& ids, co
 
 }  // namespace
 
-InitialSimplex initial_simplex(PointsView points) {
+InitialSimplex initial_simplex(PointsView points, const std::string& structure) {
   const int d = points.dim;
   const auto n = static_cast<std::int32_t>(points.n);
   const auto at = [&](std::int32_t id) { return points.point(static_cast<std::size_t>(id)); };
@@ -110,7 +110,7 @@ InitialSimplex initial_simplex(PointsView points) {
         if (span.add_if_independent(at(id))) best = id;
       if (best < 0)
         throw DegenerateInputError("all " + std::to_string(points.n) + " points lie in an affine subspace of dimension " +
-                                   std::to_string(span.rank()) + "; a convex hull in " + std::to_string(d) +
+                                   std::to_string(span.rank()) + "; " + structure + " in " + std::to_string(d) +
                                    " dimensions needs points that span " + std::to_string(d) + " dimensions");
     }
     simplex.ids.push_back(best);

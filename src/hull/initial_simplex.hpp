@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "drange/points.hpp"
@@ -21,8 +22,8 @@ struct InitialSimplex {
   std::vector<double> interior;
 };
 
-// Throws DegenerateInputError, naming the dimension of the points' affine hull, when they do
-// not span E^d.
-InitialSimplex initial_simplex(PointsView points);
+// Throws DegenerateInputError, naming the dimension of the points' affine hull and what needs
+// them to span E^d (`structure`), when they do not.
+InitialSimplex initial_simplex(PointsView points, const std::string& structure = "a convex hull");
 
 }  // namespace drange::hull

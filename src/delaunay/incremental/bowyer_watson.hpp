@@ -16,16 +16,12 @@
 #include <vector>
 
 #include "delaunay/first_facet.hpp"
+#include "delaunay/incremental/insertion.hpp"
 #include "delaunay/point_store.hpp"
 #include "drange/delaunay.hpp"
 
 namespace drange::engine {
 
-struct IncrementalCounters {
-  std::uint64_t walk_steps = 0;      // cells the walks entered
-  std::uint64_t conflict_tests = 0;  // cells tested for conflict
-  std::uint64_t unfiltered_tests = 0;  // orientations and conflict tests the fast filters left undecided
-};
 
 // Fills result.simplices (positively oriented, in `points`' ids), result.neighbors (when
 // `record_neighbors`; -1 on the hull) and result.stats.hull_facets. `first`: a hull facet of

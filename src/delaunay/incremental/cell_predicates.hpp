@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "delaunay/incremental/cell_complex.hpp"
-#include "delaunay/point_store.hpp"
+#include "delaunay/incremental/kernel_points.hpp"
 #include "geometry/error_bound.hpp"
 #include "geometry/predicates.hpp"
 #include "geometry/refined_sign.hpp"
@@ -31,7 +31,7 @@ namespace drange::engine {
 
 class CellPredicates {
  public:
-  CellPredicates(const PointStore& points, const CellComplex& cells)
+  CellPredicates(const KernelPoints& points, const CellComplex& cells)
       : points_(points), cells_(cells), d_(points.dim),
         rows_(static_cast<std::size_t>(points.dim + 2)), ranks_(static_cast<std::size_t>(points.dim + 2)) {}
 
@@ -148,7 +148,7 @@ class CellPredicates {
     return geometry::certified_sign_with(value, tree, gamma);
   }
 
-  const PointStore& points_;
+  const KernelPoints& points_;
   const CellComplex& cells_;
   int d_;
   std::vector<const double*> rows_;

@@ -20,8 +20,8 @@ std::uint64_t mix(std::uint64_t x) {
 
 // Round 0 is the first inserted; a point's round is kRounds - 1 minus its hash's trailing
 // zeros, so that half the points are in the last round.
-int round_of(std::int64_t rank) {
-  const std::uint64_t h = mix(static_cast<std::uint64_t>(rank));
+int round_of(std::int64_t key) {
+  const std::uint64_t h = mix(static_cast<std::uint64_t>(key));
   int zeros = 0;
   while (zeros < kRounds - 1 && ((h >> zeros) & 1u) == 0) ++zeros;
   return kRounds - 1 - zeros;
@@ -45,25 +45,42 @@ void leaves_in_snake_order(const spatial::KdTree& tree, std::int32_t node, std::
   leaves_in_snake_order(tree, right_first ? node + 1 : n.right, reversed ^ ~axis, leaves);
 }
 
-}  // namespace
-
-std::vector<std::int32_t> insertion_order(const PointStore& points) {
-  // A counting sort by round, ids increasing within each.
+// Positions [0, n) of `tree`'s points: by round (round_of(key(position))), then along the
+// leaves' snake path; within a leaf, by position.
+template <class Key>
+std::vector<std::int32_t> order_by_rounds(const spatial::KdTree& tree, std::int32_t n, const Key& key) {
+  // A counting sort by round.
   std::array<std::size_t, kRounds + 1> start{};
-  std::vector<std::uint8_t> round(static_cast<std::size_t>(points.size));
-  for (std::int32_t id = 0; id < points.size; ++id) {
-    const int r = round_of(points.rank(id));
+  std::vector<std::uint8_t> round(static_cast<std::size_t>(n));
+  for (std::int32_t id = 0; id < n; ++id) {
+    const int r = round_of(key(id));
     round[static_cast<std::size_t>(id)] = static_cast<std::uint8_t>(r);
     ++start[static_cast<std::size_t>(r) + 1];
   }
   for (int r = 0; r < kRounds; ++r) start[static_cast<std::size_t>(r) + 1] += start[static_cast<std::size_t>(r)];
-  std::vector<std::int32_t> order(static_cast<std::size_t>(points.size));
+  std::vector<std::int32_t> order(static_cast<std::size_t>(n));
   std::vector<std::int32_t> leaves;
-  if (!points.tree.nodes().empty()) leaves_in_snake_order(points.tree, 0, 0, leaves);
+  if (!tree.nodes().empty()) leaves_in_snake_order(tree, 0, 0, leaves);
   for (const std::int32_t leaf : leaves) {
-    const spatial::KdTree::Node& n = points.tree.nodes()[static_cast<std::size_t>(leaf)];
-    for (std::int32_t id = n.begin; id < n.end; ++id) order[start[round[static_cast<std::size_t>(id)]]++] = id;
+    const spatial::KdTree::Node& node = tree.nodes()[static_cast<std::size_t>(leaf)];
+    for (std::int32_t id = node.begin; id < node.end; ++id) order[start[round[static_cast<std::size_t>(id)]]++] = id;
   }
+  return order;
+}
+
+}  // namespace
+
+std::vector<std::int32_t> insertion_order(const PointStore& points) {
+  // The store's ids are tree positions already.
+  return order_by_rounds(points.tree, points.size, [&](std::int32_t id) { return points.rank(id); });
+}
+
+std::vector<std::int32_t> insertion_order(const double* coords, const std::int64_t* keys, std::int32_t n, int dim) {
+  spatial::KdTree tree;
+  tree.build(coords, n, dim);
+  const auto& row = tree.order();  // tree position -> row
+  std::vector<std::int32_t> order = order_by_rounds(tree, n, [&](std::int32_t position) { return keys[row[static_cast<std::size_t>(position)]]; });
+  for (std::int32_t& position : order) position = row[static_cast<std::size_t>(position)];
   return order;
 }
 

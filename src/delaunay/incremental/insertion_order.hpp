@@ -22,4 +22,9 @@ namespace drange::engine {
 // Every id of `points` once, coarsest round first.
 std::vector<std::int32_t> insertion_order(const PointStore& points);
 
+// The same order for `n` rows of `coords` (row-major, `dim` columns) that no kd-tree holds
+// yet: the rounds drawn from `keys` (one distinct value per row), the path along a kd-tree
+// built here. Every row once, as row numbers.
+std::vector<std::int32_t> insertion_order(const double* coords, const std::int64_t* keys, std::int32_t n, int dim);
+
 }  // namespace drange::engine

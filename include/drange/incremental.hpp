@@ -1,0 +1,52 @@
+// drange/incremental.hpp: a Delaunay triangulation that grows as points are added.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+
+#include "drange/delaunay.hpp"
+#include "drange/points.hpp"
+
+namespace drange {
+
+// The Delaunay triangulation of every point added so far, kept up to date point by point:
+// each new point removes the simplices whose circumspheres hold it and is joined to the
+// boundary of the cavity they leave (Bowyer-Watson, with drange's exact predicates and
+// symbolic perturbation). After any sequence of add_points, triangulation() has the same
+// simplices, as vertex sets, as delaunay() on all the points in the order added: the
+// triangulation under the perturbation is unique. The cost of add_points follows the change
+// (the simplices created and removed, and a walk to each new point), plus one pass over an
+// array of the points to keep their lexicographic ranks; the initial points are inserted in a
+// biased randomized order, as Options::algorithm "incremental" does. One thread.
+class IncrementalDelaunay {
+ public:
+  // Triangulates `points`. Throws as delaunay(): InputError (NaN or infinite coordinate, a
+  // dimension outside 2..11), DegenerateInputError (fewer than d+1 distinct points, or all in
+  // one hyperplane).
+  explicit IncrementalDelaunay(PointsView points);
+  ~IncrementalDelaunay();
+  IncrementalDelaunay(IncrementalDelaunay&&) noexcept;
+  IncrementalDelaunay& operator=(IncrementalDelaunay&&) noexcept;
+
+  // Adds `points` (the same dimension), numbered after those added before. An exact copy of
+  // a point already there is a duplicate, left out as delaunay() leaves it. Throws InputError,
+  // naming the point by its index among all the points, for a wrong dimension or a NaN or
+  // infinite coordinate; the triangulation is then unchanged.
+  void add_points(PointsView points);
+
+  int dim() const;
+  std::size_t size() const;  // points added, duplicates included
+
+  // The triangulation now, in the layout of delaunay()'s result (simplices in the order of the
+  // kernel's storage, each positively oriented; neighbours when `neighbors`). Its statistics
+  // count the work of every insertion so far (search_calls: the cells the walks entered;
+  // debug.points_tested: the cells tested for conflict) and its times are those of all the
+  // add_points calls, the constructor's included.
+  Triangulation triangulation(bool neighbors = true) const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace drange

@@ -1,0 +1,131 @@
+// Tests of drange::IncrementalDelaunay: after any sequence of add_points, the same simplices as
+// delaunay() on all the points, valid and linked; duplicates as delaunay() reports them; bad
+// batches refused without changing the triangulation.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "drange/delaunay.hpp"
+#include "drange/errors.hpp"
+#include "drange/generate.hpp"
+#include "drange/incremental.hpp"
+#include "triangulation_checks.hpp"
+
+namespace {
+
+using namespace drange::test::checks;
+using drange::IncrementalDelaunay;
+using drange::PointsView;
+
+PointsView rows(const PointCloud& points, std::size_t begin, std::size_t end) {
+  return PointsView(points.point(begin), end - begin, points.dim);
+}
+
+// Builds from the first `initial` points, then adds the rest `chunk` at a time.
+IncrementalDelaunay grown(const PointCloud& points, std::size_t initial, std::size_t chunk) {
+  IncrementalDelaunay t(rows(points, 0, initial));
+  for (std::size_t i = initial; i < points.size(); i += chunk) t.add_points(rows(points, i, std::min(points.size(), i + chunk)));
+  return t;
+}
+
+void expect_same_as_delaunay(const PointCloud& points, const Triangulation& grown_result, const std::string& what) {
+  const Triangulation reference = drange::delaunay(points);
+  EXPECT_EQ(canonical(grown_result), canonical(reference)) << what;
+  ASSERT_EQ(grown_result.duplicates.size(), reference.duplicates.size()) << what;
+  for (std::size_t i = 0; i < reference.duplicates.size(); ++i) {
+    EXPECT_EQ(grown_result.duplicates[i].index, reference.duplicates[i].index) << what;
+    EXPECT_EQ(grown_result.duplicates[i].original, reference.duplicates[i].original) << what;
+  }
+  EXPECT_EQ(grown_result.stats.hull_facets, reference.stats.hull_facets) << what;
+  EXPECT_EQ(grown_result.stats.distinct_points, reference.stats.distinct_points) << what;
+  expect_consistent_adjacency(points, grown_result);
+}
+
+TEST(IncrementalDelaunay, AnyChunkingGivesTheOneShotSimplices) {
+  for (int d = 2; d <= 5; ++d) {
+    const PointCloud points = drange::generate_points(Distribution::Uniform, d <= 3 ? 1500 : 300, d, 70 + d);
+    for (const std::size_t chunk : {std::size_t{1}, std::size_t{7}, std::size_t{100000}}) {
+      const IncrementalDelaunay t = grown(points, static_cast<std::size_t>(d + 2), chunk);
+      EXPECT_EQ(t.size(), points.size());
+      expect_same_as_delaunay(points, t.triangulation(), "d=" + std::to_string(d) + " chunk=" + std::to_string(chunk));
+    }
+  }
+}
+
+TEST(IncrementalDelaunay, DegenerateInputsGiveTheOneShotSimplices) {
+  // Cospherical grids (every tie broken by the perturbation, whose order the later points
+  // change), points on hull hyperplanes, spheres, and points added outside the hull so far.
+  PointCloud growing_square{2, {}};
+  for (int ring = 1; ring <= 6; ++ring)
+    for (int i = -ring; i <= ring; ++i)
+      growing_square.coords.insert(growing_square.coords.end(), {double(i), double(-ring), double(i), double(ring),
+                                                                 double(-ring), double(i), double(ring), double(i)});
+  const std::vector<std::pair<std::string, PointCloud>> cases = {
+      {"grid 2D 12x12", grid(2, 12)},
+      {"grid 3D 5^3", grid(3, 5)},
+      {"grid 4D 3^4", grid(4, 3)},
+      {"sphere 3D", drange::generate_points(Distribution::Sphere, 300, 3, 5)},
+      {"squares growing outwards", growing_square},
+  };
+  for (const auto& [name, points] : cases)
+    for (const std::size_t chunk : {std::size_t{1}, std::size_t{16}}) {
+      // The grids' first third is flat: one point more spans them.
+      const Triangulation t = grown(points, points.size() / 3 + 1, chunk).triangulation();
+      expect_same_as_delaunay(points, t, name + " chunk=" + std::to_string(chunk));
+      expect_valid(points, t, name);
+    }
+}
+
+TEST(IncrementalDelaunay, DuplicatesAreReportedAsDelaunayReportsThem) {
+  // Copies within the first points, within a batch, and of earlier points; -0.0 copies 0.0.
+  const PointCloud points{2, {0, 0, 1, 0, 0, 1, 1, 0,        // 3 copies 1
+                              2, 2, -0.0, 0.0, 3, 1, 2, 2,   // 5 copies 0, 7 copies 4
+                              3, 1, 0.5, 0.25, 0.5, 0.25}};  // 8 copies 6, 10 copies 9
+  IncrementalDelaunay t(rows(points, 0, 4));
+  t.add_points(rows(points, 4, 8));
+  t.add_points(rows(points, 8, 11));
+  expect_same_as_delaunay(points, t.triangulation(), "duplicates");
+}
+
+TEST(IncrementalDelaunay, ScaleChangesKeepTheTriangulation) {
+  // Later points far larger than the first (the kernel's scaled copy is redone), then points
+  // so small that no power of two keeps every value normal (the unscaled predicates).
+  PointCloud points = drange::generate_points(Distribution::Uniform, 200, 3, 9);
+  for (std::size_t i = 100; i < 150; ++i)
+    for (int k = 0; k < 3; ++k) points.coords[i * 3 + static_cast<std::size_t>(k)] *= 1e200;
+  for (std::size_t i = 150; i < 155; ++i)
+    for (int k = 0; k < 3; ++k) points.coords[i * 3 + static_cast<std::size_t>(k)] *= 1e-300;
+  IncrementalDelaunay t(rows(points, 0, 100));
+  t.add_points(rows(points, 100, 150));
+  expect_same_as_delaunay(PointCloud{3, std::vector<double>(points.coords.begin(), points.coords.begin() + 450)},
+                          t.triangulation(), "large points added");
+  t.add_points(rows(points, 150, 200));
+  expect_same_as_delaunay(points, t.triangulation(), "tiny points added");
+}
+
+TEST(IncrementalDelaunay, BadInputIsRefusedAndLeavesTheTriangulation) {
+  EXPECT_THROW(IncrementalDelaunay(PointsView(std::vector<double>{0, 0, 1, 1, 2, 2}.data(), 3, 2)),
+               drange::DegenerateInputError);
+  EXPECT_THROW(IncrementalDelaunay(PointsView(std::vector<double>{0, 0, 1, 0, 0, 0}.data(), 3, 2)),
+               drange::DegenerateInputError);
+  const PointCloud points = drange::generate_points(Distribution::Uniform, 50, 2, 4);
+  IncrementalDelaunay t(points);
+  const std::vector<std::int32_t> before = t.triangulation().simplices;
+  const std::vector<double> bad{0.5, 0.5, 0.25, std::numeric_limits<double>::quiet_NaN()};
+  try {
+    t.add_points(PointsView(bad.data(), 2, 2));
+    ADD_FAILURE() << "no exception for a NaN";
+  } catch (const drange::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("point 51, coordinate 1 is NaN"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(t.add_points(PointsView(bad.data(), 1, 3)), drange::InputError);
+  EXPECT_EQ(t.size(), 50u);
+  EXPECT_EQ(t.triangulation().simplices, before);
+  t.add_points(PointsView(bad.data(), 0, 2));  // nothing to add
+  EXPECT_EQ(t.size(), 50u);
+}
+
+}  // namespace
