@@ -1,4 +1,5 @@
 """drange.Delaunay: scipy.spatial.Delaunay's interface over the D-Range engine."""
+import warnings
 from functools import cached_property
 
 import numpy as np
@@ -28,11 +29,15 @@ class Delaunay(PointSetAttributes):
     ----------
     points : array_like, shape (npoints, ndim)
         Coordinates of the points, 2 <= ndim <= 11.
-    furthest_site, incremental, qhull_options
-        scipy's arguments, accepted so that code switches in one line. Only the defaults are
-        supported (furthest_site=True and incremental=True raise NotImplementedError);
-        qhull_options has no effect, since no decision needs a tolerance, except that 'QJ'
-        (joggling) raises ValueError: drange never joggles.
+    furthest_site, qhull_options
+        scipy's arguments, accepted so that code switches in one line. furthest_site=True
+        raises NotImplementedError; qhull_options has no effect, since no decision needs a
+        tolerance, except that 'QJ' (joggling) raises ValueError: drange never joggles.
+    incremental : bool
+        Allow add_points: the triangulation is kept by insertion (the "incremental"
+        algorithm, one thread; `variant` and `algorithm` are then not used), and each call
+        removes the simplices whose circumspheres hold a new point and joins it to the cavity's
+        boundary, so that its cost follows the change. close() ends it.
     threads : int, keyword only
         Threads for the search and for find_simplex; 0 (default) uses all cores.
     variant : str, keyword only
@@ -78,20 +83,43 @@ class Delaunay(PointSetAttributes):
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None, *,
                  threads=0, variant="full", algorithm="auto", progress=None):
-        check_scipy_arguments(furthest_site, incremental, qhull_options)
+        check_scipy_arguments(furthest_site, qhull_options)
         check_options(variant, threads, algorithm)
         self.points = as_points(points)
-        self._arguments = {"threads": int(threads), "variant": variant, "algorithm": algorithm}
-        self._core = _drange.triangulate(self.points, variant, algorithm, int(threads), progress)
+        self._arguments = {"threads": int(threads), "variant": variant, "algorithm": algorithm,
+                           "incremental": bool(incremental)}
         self._threads = int(threads)
-        self.simplices = self._core.simplices
-        self.neighbors = self._core.neighbors
-        self.statistics = self._core.statistics
+        if incremental:
+            self._incremental = self._new_incremental(self.points)
+            self._take_incremental_result()
+        else:
+            self._incremental = None
+            self._take(_drange.triangulate(self.points, variant, algorithm, int(threads), progress))
         self.furthest_site = False
         self.paraboloid_scale = 1.0
         self.paraboloid_shift = 0.0
 
+    def _take(self, core):
+        self._core = core
+        self.simplices = core.simplices
+        self.neighbors = core.neighbors
+        self.statistics = core.statistics
+
+    @staticmethod
+    def _new_incremental(points):
+        return _drange.IncrementalDelaunay(points)
+
+    def _take_incremental_result(self):
+        self._take(self._incremental.triangulated(self.points))
+
     nsimplex = property(lambda self: self.simplices.shape[0], doc="Number of simplices.")
+
+    @property
+    def vertices(self):
+        """scipy's deprecated name of `simplices` (scipy 1.10 warns as here; 1.11 removed it)."""
+        warnings.warn("Delaunay attribute 'vertices' is deprecated in favour of 'simplices' and will be "
+                      "removed in Scipy 1.11.0.", DeprecationWarning, stacklevel=2)
+        return self.simplices
 
     @cached_property
     def vertex_to_simplex(self):

@@ -51,9 +51,11 @@ class HalfspaceIntersection:
         The inequalities, stacked as [A; b].
     interior_point : array_like, shape (ndim,)
         A point strictly inside every halfspace (checked exactly).
-    incremental, qhull_options
-        scipy's arguments: incremental=True raises NotImplementedError, 'QJ' ValueError; other
-        options have no effect.
+    incremental : bool
+        Allow add_halfspaces (scipy's argument); each call computes the intersection of all
+        the halfspaces again. close() ends it.
+    qhull_options
+        scipy's argument: 'QJ' raises ValueError; the other options have no effect.
 
     Attributes
     ----------
@@ -83,7 +85,7 @@ class HalfspaceIntersection:
     """
 
     def __init__(self, halfspaces, interior_point, incremental=False, qhull_options=None):
-        check_scipy_arguments(False, incremental, qhull_options)
+        check_scipy_arguments(False, qhull_options)
         halfspaces = np.ascontiguousarray(np.asarray(halfspaces, dtype=np.float64))
         if halfspaces.ndim != 2 or halfspaces.shape[1] < 3:
             raise ValueError(f"halfspaces must be a 2-D array of shape (nineq, ndim+1) with ndim >= 2; got shape {halfspaces.shape}")
@@ -93,9 +95,17 @@ class HalfspaceIntersection:
             raise ValueError(f"interior_point must have shape ({d},); got {interior_point.shape}")
         if not (np.isfinite(halfspaces).all() and np.isfinite(interior_point).all()):
             raise ValueError("halfspaces and interior_point must be finite (no NaN or infinity)")
-        self.halfspaces = halfspaces
         self.interior_point = interior_point
         self._qhull_options = qhull_options
+        self._incremental = bool(incremental)
+        self._build(halfspaces)
+
+    def _build(self, halfspaces):
+        """The intersection of `halfspaces` around self.interior_point (checked above)."""
+        d = halfspaces.shape[1] - 1
+        interior_point = self.interior_point
+        self.halfspaces = halfspaces
+        self.__dict__.pop("intersections", None)
         offsets, signs = _offsets_at(halfspaces, interior_point)
         outside = np.flatnonzero(signs >= 0)
         if len(outside):
@@ -142,15 +152,25 @@ class HalfspaceIntersection:
         return np.linalg.solve(a, -b[..., None])[..., 0] + 0.0  # + 0.0: no negative zeros
 
     def __reduce__(self):
-        return type(self), (self.halfspaces, self.interior_point, False, self._qhull_options)
+        return type(self), (self.halfspaces, self.interior_point, self._incremental, self._qhull_options)
 
     def add_halfspaces(self, halfspaces, restart=False):
-        """scipy's incremental method: not supported (drange builds the intersection at once)."""
-        raise NotImplementedError("incremental construction (add_halfspaces) is not supported by drange; "
-                                  "build a new HalfspaceIntersection on all the halfspaces")
+        """Adds halfspaces (incremental=True only; scipy's method): the intersection of all of
+        them is computed again. Raises RuntimeError without incremental=True or after close()."""
+        if not self._incremental:
+            raise RuntimeError("incremental mode is not enabled or the object was closed: add_halfspaces "
+                               "needs incremental=True and no close() before")
+        added = np.asarray(halfspaces, dtype=np.float64)
+        if added.ndim != 2 or added.shape[1] != self.ndim + 1:
+            raise ValueError(f"halfspaces to add must be a 2-D array of shape (nineq, {self.ndim + 1}); "
+                             f"got shape {added.shape}")
+        if not np.isfinite(added).all():
+            raise ValueError("halfspaces must be finite (no NaN or infinity)")
+        self._build(np.ascontiguousarray(np.concatenate([self.halfspaces, added])))
 
     def close(self):
-        """scipy's method; drange keeps no Qhull state, so there is nothing to release."""
+        """Ends incremental mode (scipy's method)."""
+        self._incremental = False
 
     def __repr__(self):
         return f"<drange.HalfspaceIntersection: {self.nineq} halfspaces in {self.ndim}D, {len(self.dual_facets)} vertices>"

@@ -37,6 +37,13 @@ def _counter_clockwise(simplices):
     return np.array(order, dtype=np.int32)
 
 
+class _Rebuilt:
+    """ConvexHull's incremental state: none, since each add_points computes the hull again."""
+
+    def add_points(self, points):
+        pass
+
+
 class ConvexHull(PointSetAttributes):
     """Convex hull in N >= 2 dimensions, exact, its facets triangulated.
 
@@ -45,7 +52,9 @@ class ConvexHull(PointSetAttributes):
     points : array_like, shape (npoints, ndim)
         Coordinates of the points, 2 <= ndim <= 11.
     incremental : bool
-        scipy's argument; only False is supported (True raises NotImplementedError).
+        Allow add_points (scipy's argument); each call computes the hull of all the points
+        again (Quickhull from scratch: exact, and the same facets as a new ConvexHull). close()
+        ends it.
     qhull_options : str
         scipy's options. 'QGn' and 'QG-n' are honoured as in scipy: point n is left out of
         the hull, and `good` marks the facets that point n sees (or, with '-', does not see);
@@ -78,10 +87,14 @@ class ConvexHull(PointSetAttributes):
     """
 
     def __init__(self, points, incremental=False, qhull_options=None):
-        check_scipy_arguments(False, incremental, qhull_options)
+        check_scipy_arguments(False, qhull_options)
         self.points = as_points(points)
         self._arguments = {"qhull_options": qhull_options}
-        good = _good_option(qhull_options, self.npoints)
+        self._incremental = _Rebuilt() if incremental else None
+        self._build()
+
+    def _build(self):
+        good = _good_option(self._arguments["qhull_options"], self.npoints)
         self.good = None
         if good is None:
             self._core = _drange.convex_hull(self.points)
@@ -104,6 +117,13 @@ class ConvexHull(PointSetAttributes):
             sides = self._core.facet_sides(self.points[n])
             self.good = sides > 0 if visible else sides <= 0
         self.vertices = _counter_clockwise(self.simplices) if self.ndim == 2 else vertices
+
+    @staticmethod
+    def _new_incremental(points):
+        return _Rebuilt()
+
+    def _take_incremental_result(self):
+        self._build()
 
     nsimplex = property(lambda self: self.simplices.shape[0], doc="Number of facets.")
 
@@ -128,12 +148,7 @@ class ConvexHull(PointSetAttributes):
 
     def __reduce__(self):
         # The points and the options rebuild the identical hull.
-        return type(self), (self.points, False, self._arguments["qhull_options"])
-
-    def add_points(self, points, restart=False):
-        """scipy's incremental method: not supported (drange builds the hull at once)."""
-        raise NotImplementedError("incremental construction (add_points) is not supported by drange; "
-                                  "build a new ConvexHull on all the points")
+        return type(self), (self.points, self._incremental is not None, self._arguments["qhull_options"])
 
     def __repr__(self):
         return f"<drange.ConvexHull: {self.npoints} points in {self.ndim}D, {self.nsimplex} facets>"

@@ -1,5 +1,6 @@
 """Turning what the user passes into what the engine reads; what every class shares."""
 import copy
+from functools import cached_property
 
 import numpy as np
 
@@ -16,12 +17,18 @@ def as_points(points):
     return np.ascontiguousarray(array)
 
 
-def check_scipy_arguments(furthest_site, incremental, qhull_options):
+def as_added_points(points, ndim):
+    """Points for add_points: as as_points, of the triangulation's dimension; none is allowed."""
+    array = np.asarray(points, dtype=np.float64)
+    if array.ndim != 2 or array.shape[1] != ndim:
+        raise ValueError(f"points to add must be a 2-D array of shape (npoints, {ndim}); got shape {array.shape}")
+    return np.ascontiguousarray(array)
+
+
+def check_scipy_arguments(furthest_site, qhull_options):
     """scipy's constructor arguments: accepted where they make sense here."""
     if furthest_site:
         raise NotImplementedError("furthest_site=True is not supported by drange")
-    if incremental:
-        raise NotImplementedError("incremental=True (add_points) is not supported by drange")
     if qhull_options is not None and not isinstance(qhull_options, (str, bytes)):
         raise TypeError(f"qhull_options must be a string or None; got {type(qhull_options).__name__}")
     options = qhull_options.decode() if isinstance(qhull_options, bytes) else (qhull_options or "")
@@ -80,8 +87,41 @@ class PointSetAttributes:
         result = object.__new__(type(self))
         memo[id(self)] = result
         for name, value in self.__dict__.items():
-            result.__dict__[name] = value if name == "_core" else copy.deepcopy(value, memo)
+            if name != "_incremental":
+                result.__dict__[name] = value if name == "_core" else copy.deepcopy(value, memo)
+        # The incremental state is the copy's own: the same triangulation, built again.
+        if self.__dict__.get("_incremental") is not None:
+            result._incremental = result._new_incremental(result.points)
         return result
+
+    def _forget_cached(self):
+        """Drops every cached attribute, for a class whose points changed (add_points)."""
+        for cls in type(self).__mro__:
+            for name, member in vars(cls).items():
+                if isinstance(member, cached_property):
+                    self.__dict__.pop(name, None)
+
+    def _incremental_state(self):
+        state = self.__dict__.get("_incremental")
+        if state is None:
+            raise RuntimeError("incremental mode is not enabled or the object was closed: add_points needs "
+                               "incremental=True and no close() before")
+        return state
+
+    def add_points(self, points, restart=False):
+        """Adds points (incremental=True only): the result is then the one a new object on all
+        the points gives (the same simplices, as sets of point indices; their order may differ).
+        restart=True builds the state again from all the points; without it only the change is
+        computed. Raises RuntimeError without incremental=True or after close()."""
+        state = self._incremental_state()
+        everything = np.concatenate([self.points, as_added_points(points, self.ndim)])
+        if restart:
+            state = self._incremental = self._new_incremental(everything)
+        else:
+            state.add_points(everything[self.npoints:])
+        self.points = everything
+        self._forget_cached()
+        self._take_incremental_result()
 
     npoints = property(lambda self: self.points.shape[0], doc="Number of input points.")
     ndim = property(lambda self: self.points.shape[1], doc="Dimension of the space.")
@@ -89,4 +129,6 @@ class PointSetAttributes:
     max_bound = property(lambda self: self.points.max(axis=0), doc="Maximum of the points' coordinates.")
 
     def close(self):
-        """scipy's method; drange keeps no Qhull state, so there is nothing to release."""
+        """Ends incremental mode (scipy's method): frees the state that add_points needs. Without
+        incremental=True there is nothing to free."""
+        self._incremental = None

@@ -17,7 +17,7 @@ def _rows(offsets, values):
 class Voronoi(PointSetAttributes):
     """Voronoi diagram in N >= 2 dimensions, read off the exact Delaunay triangulation.
 
-    Parameters are scipy's (see drange.Delaunay for furthest_site, incremental,
+    Parameters are scipy's (see drange.Delaunay for furthest_site, incremental (add_points),
     qhull_options, threads, variant, algorithm and progress), plus:
 
     cell_volumes : bool, keyword only
@@ -34,7 +34,9 @@ class Voronoi(PointSetAttributes):
     ridge_vertices : list of list of int
         The vertices of each ridge, -1 for the point at infinity (3D: in cyclic order).
     regions : list of list of int
-        Each cell's vertices, -1 when unbounded (2D: counter-clockwise).
+        Each cell's vertices, -1 when unbounded (2D: counter-clockwise). With the option 'Qz'
+        in qhull_options, one more region first, empty, as in scipy (Qhull's point at
+        infinity): no point's region; its volume is NaN and its region_point -1.
     point_region : ndarray of int32, (npoints,)
         Each point's region; an exact duplicate shares the region of the point it copies.
     volumes : ndarray of double, (nregions,)
@@ -48,21 +50,43 @@ class Voronoi(PointSetAttributes):
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None, *,
                  threads=0, variant="full", algorithm="auto", cell_volumes=True, progress=None):
-        check_scipy_arguments(furthest_site, incremental, qhull_options)
+        check_scipy_arguments(furthest_site, qhull_options)
         check_options(variant, threads, algorithm)
         self.points = as_points(points)
-        self._arguments = {"threads": int(threads), "variant": variant, "algorithm": algorithm, "cell_volumes": bool(cell_volumes)}
-        self._core = _drange.voronoi(self.points, variant, algorithm, int(threads), bool(cell_volumes), progress)
-        self.vertices = self._core.vertices
-        self.ridge_points = self._core.ridge_points
-        self.point_region = self._core.point_region
-        self.region_point = self._core.region_point
-        self.simplex_vertex = self._core.simplex_vertex
-        self.statistics = self._core.statistics
+        self._arguments = {"threads": int(threads), "variant": variant, "algorithm": algorithm,
+                           "cell_volumes": bool(cell_volumes), "incremental": bool(incremental),
+                           "qhull_options": qhull_options}
+        options = qhull_options.decode() if isinstance(qhull_options, bytes) else (qhull_options or "")
+        self._region_at_infinity = "Qz" in options.split()
+        if incremental:
+            self._incremental = self._new_incremental(self.points)
+            self._take_incremental_result()
+        else:
+            self._incremental = None
+            self._take(_drange.voronoi(self.points, variant, algorithm, int(threads), bool(cell_volumes), progress))
         self.furthest_site = False
-        volumes = self._core.volumes
-        self.volumes = volumes if len(volumes) == len(self.region_point) else np.full(len(self.region_point), np.nan)
 
+    def _take(self, core):
+        self._core = core
+        self.vertices = core.vertices
+        self.ridge_points = core.ridge_points
+        self.point_region = core.point_region
+        self.region_point = core.region_point
+        self.simplex_vertex = core.simplex_vertex
+        self.statistics = core.statistics
+        volumes = core.volumes
+        self.volumes = volumes if len(volumes) == len(self.region_point) else np.full(len(self.region_point), np.nan)
+        if self._region_at_infinity:
+            self.point_region = self.point_region + 1
+            self.region_point = np.r_[np.int32(-1), self.region_point]
+            self.volumes = np.r_[np.nan, self.volumes]
+
+    @staticmethod
+    def _new_incremental(points):
+        return _drange.IncrementalDelaunay(points)
+
+    def _take_incremental_result(self):
+        self._take(self._incremental.diagram(self.points, self._arguments["cell_volumes"]))
 
     @cached_property
     def ridge_vertices(self):
@@ -70,7 +94,9 @@ class Voronoi(PointSetAttributes):
 
     @cached_property
     def regions(self):
-        return _rows(self._core.region_offsets, self._core.region_indices)
+        regions = _rows(self._core.region_offsets, self._core.region_indices)
+        # Qhull's option Qz adds a point at infinity, whose region is empty and no point's.
+        return [[]] + regions if self._region_at_infinity else regions
 
     @property
     def ridge_dict(self):
@@ -87,7 +113,7 @@ class Voronoi(PointSetAttributes):
             lower, upper = _drange.default_clip_box(self.points, float(margin))
         else:
             lower, upper = (np.asarray(b, dtype=np.float64).ravel() for b in box)
-        return ClippedCells(self._core.clip(lower.tolist(), upper.tolist()), self.ndim, self.region_point)
+        return ClippedCells(self._core.clip(lower.tolist(), upper.tolist()), self.ndim, self._core.region_point)
 
     def __repr__(self):
         return (f"<drange.Voronoi: {self.npoints} points in {self.ndim}D, {len(self.vertices)} vertices, "

@@ -15,6 +15,7 @@
 #include "drange/check.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
+#include "drange/incremental.hpp"
 #include "drange/locate.hpp"
 #include "drange/voronoi.hpp"
 #include "numpy_views.hpp"
@@ -267,6 +268,33 @@ PYBIND11_MODULE(_drange, m) {
     diagram->points = std::move(points);
     return diagram;
   }, py::arg("points"), py::arg("ids"), py::arg("variant"), py::arg("threads"), py::arg("cell_volumes"));
+
+  // The incremental triangulation: the caller (drange.Delaunay, drange.Voronoi) keeps the
+  // array of every point added and passes it to each result, which views it. Calls hold the
+  // GIL: the object changes, and two Python threads must not change it at once.
+  py::class_<IncrementalDelaunay>(m, "IncrementalDelaunay")
+      .def(py::init([](const Points& points) {
+        return std::make_unique<IncrementalDelaunay>(points_view(points, "points"));
+      }), py::arg("points"))
+      .def("add_points", [](IncrementalDelaunay& t, const Points& points) {
+        t.add_points(points_view(points, "points"));
+      }, py::arg("points"))
+      .def("triangulated", [](const IncrementalDelaunay& t, Points all_points) {
+        auto triangulated = std::make_unique<Triangulated>();
+        triangulated->result = t.triangulation();
+        triangulated->points = std::move(all_points);
+        return triangulated;
+      }, py::arg("all_points"))
+      .def("diagram", [](const IncrementalDelaunay& t, Points all_points, bool cell_volumes) {
+        VoronoiOptions options;
+        options.cell_volumes = cell_volumes;
+        auto diagram = std::make_unique<Diagram>();
+        const Triangulation triangulation = t.triangulation();
+        diagram->statistics = triangulation.stats;
+        diagram->result = voronoi(points_view(all_points, "points"), triangulation, options);
+        diagram->points = std::move(all_points);
+        return diagram;
+      }, py::arg("all_points"), py::arg("cell_volumes"));
 
   m.def("default_clip_box", [](Points points, double margin) {
     const Box box = default_clip_box(points_view(points, "points"), margin);

@@ -49,7 +49,6 @@ def test_degenerate_input(cls, points, message):
     ({"threads": "2"}, TypeError, "threads must be an integer"),
     ({"threads": True}, TypeError, "threads must be an integer"),
     ({"furthest_site": True}, NotImplementedError, "furthest_site"),
-    ({"incremental": True}, NotImplementedError, "incremental"),
     ({"qhull_options": 5}, TypeError, "qhull_options"),
 ])
 def test_bad_options(kwargs, error, message):

@@ -117,10 +117,14 @@ def test_errors():
         drange.HalfspaceIntersection([[1.0, 2.0]], [0.5])
     with pytest.raises(ValueError, match="QJ"):
         drange.HalfspaceIntersection(square, [0.5, 0.5], qhull_options="QJ")
-    with pytest.raises(NotImplementedError):
-        drange.HalfspaceIntersection(square, [0.5, 0.5], incremental=True)
-    with pytest.raises(NotImplementedError):
+    with pytest.raises(RuntimeError, match="incremental"):
         drange.HalfspaceIntersection(square, [0.5, 0.5]).add_halfspaces(square)
+    closed = drange.HalfspaceIntersection(square, [0.5, 0.5], incremental=True)
+    with pytest.raises(ValueError, match="shape"):
+        closed.add_halfspaces([[1.0, 0.0]])
+    closed.close()
+    with pytest.raises(RuntimeError, match="closed"):
+        closed.add_halfspaces(square)
 
 
 def test_pickle_and_attributes():

@@ -211,9 +211,9 @@ def test_errors():
         drange.ConvexHull(np.eye(3), qhull_options="QGx")
     with pytest.raises(ValueError, match="does not exist"):
         drange.ConvexHull(np.eye(3), qhull_options="QG5")
-    with pytest.raises(NotImplementedError):
+    with pytest.raises(drange.DegenerateInputError):
         drange.ConvexHull(np.eye(3), incremental=True)
-    with pytest.raises(NotImplementedError):
+    with pytest.raises(RuntimeError, match="incremental"):
         drange.ConvexHull(np.vstack([np.eye(3), np.zeros(3)])).add_points([[1, 1, 1]])
 
 

@@ -1,0 +1,115 @@
+"""incremental=True and add_points: the result equals a new object on all the points, for
+Delaunay, Voronoi, ConvexHull and HalfspaceIntersection; the state's life (close, restart,
+copies, pickles) and its errors."""
+import copy
+import pickle
+
+import numpy as np
+import pytest
+
+import drange
+
+
+def simplex_set(simplices):
+    return sorted(tuple(sorted(s)) for s in simplices.tolist())
+
+
+def grow(cls, points, initial, chunk, **kwargs):
+    grown = cls(points[:initial], incremental=True, **kwargs)
+    for start in range(initial, len(points), chunk):
+        grown.add_points(points[start:start + chunk])
+    return grown
+
+
+@pytest.mark.parametrize("ndim", [2, 3, 4, 5])
+@pytest.mark.parametrize("chunk", [1, 5, 1000])
+def test_delaunay_grown_equals_fresh(ndim, chunk):
+    points = np.random.default_rng(ndim).random((300 if ndim <= 3 else 120, ndim))
+    grown = grow(drange.Delaunay, points, ndim + 2, chunk)
+    fresh = drange.Delaunay(points)
+    assert grown.npoints == len(points)
+    assert simplex_set(grown.simplices) == simplex_set(fresh.simplices)
+    assert grown.statistics["algorithm"] == "incremental"
+    # The derived attributes follow the new simplices (cached ones are dropped).
+    assert simplex_set(grown.convex_hull) == simplex_set(fresh.convex_hull)
+    queries = np.random.default_rng(9).random((50, ndim))
+    inside = grown.find_simplex(queries)
+    assert ((inside >= 0) == (fresh.find_simplex(queries) >= 0)).all()
+    found = inside >= 0
+    transform = grown.transform[inside[found]]
+    barycentric = np.einsum("ijk,ik->ij", transform[:, :ndim], queries[found] - transform[:, ndim])
+    assert (barycentric >= -1e-9).all() and (barycentric.sum(axis=1) <= 1 + 1e-9).all()
+
+
+def test_degenerate_and_duplicate_points_added():
+    # A grid grown ring by ring: each ring's points are cocircular with the ones inside, and
+    # the corners come twice (duplicates).
+    rings = [np.array([[i, -r], [i, r], [-r, i], [r, i]], dtype=float)
+             for r in range(1, 6) for i in range(-r, r + 1)]
+    points = np.concatenate(rings)
+    grown = grow(drange.Delaunay, points, 8, 3)
+    fresh = drange.Delaunay(points)
+    assert simplex_set(grown.simplices) == simplex_set(fresh.simplices)
+    assert sorted(grown.coplanar[:, [0, 2]].tolist()) == sorted(fresh.coplanar[:, [0, 2]].tolist())
+    assert (grown.vertex_to_simplex >= 0).all()
+
+
+def test_restart_close_and_errors():
+    points = np.random.default_rng(1).random((60, 2))
+    restarted = drange.Delaunay(points[:10], incremental=True)
+    restarted.add_points(points[10:], restart=True)
+    assert simplex_set(restarted.simplices) == simplex_set(drange.Delaunay(points).simplices)
+    with pytest.raises(ValueError, match="shape"):
+        restarted.add_points(np.zeros((2, 3)))
+    with pytest.raises(ValueError, match="point 61, coordinate 0 is NaN"):
+        restarted.add_points([[0.5, 0.5], [np.nan, 0.5]])
+    assert restarted.npoints == 60  # a refused batch changes nothing
+    restarted.add_points(np.empty((0, 2)))
+    assert restarted.npoints == 60
+    restarted.close()
+    with pytest.raises(RuntimeError, match="closed"):
+        restarted.add_points(points[:1])
+    with pytest.raises(RuntimeError, match="incremental"):
+        drange.Delaunay(points).add_points(points[:1])
+    with pytest.raises(drange.DegenerateInputError, match="span 2 dimensions"):
+        drange.Delaunay([[0, 0], [1, 1], [2, 2]], incremental=True)
+
+
+def test_copies_and_pickles_keep_their_own_state():
+    points = np.random.default_rng(2).random((80, 3))
+    original = drange.Delaunay(points[:40], incremental=True)
+    deep = copy.deepcopy(original)
+    restored = pickle.loads(pickle.dumps(original))
+    original.add_points(points[40:60])
+    assert deep.npoints == 40 and restored.npoints == 40
+    for other in (deep, restored):
+        other.add_points(points[40:])
+        assert simplex_set(other.simplices) == simplex_set(drange.Delaunay(points).simplices)
+    assert original.npoints == 60
+
+
+@pytest.mark.parametrize("ndim", [2, 3])
+def test_voronoi_grown_equals_fresh(ndim):
+    points = np.random.default_rng(5 + ndim).random((200, ndim))
+    grown = grow(drange.Voronoi, points, 20, 17)
+    fresh = drange.Voronoi(points)
+    assert np.array_equal(np.sort(grown.ridge_points, axis=1)[np.lexsort(np.sort(grown.ridge_points, axis=1).T)],
+                          np.sort(fresh.ridge_points, axis=1)[np.lexsort(np.sort(fresh.ridge_points, axis=1).T)])
+    assert np.allclose(grown.volumes[grown.point_region], fresh.volumes[fresh.point_region])
+    assert np.allclose(np.sort(grown.vertices, axis=0), np.sort(fresh.vertices, axis=0))
+
+
+def test_hull_and_halfspaces_grown_equal_fresh():
+    points = np.random.default_rng(3).standard_normal((150, 3))
+    grown = grow(drange.ConvexHull, points, 10, 20, qhull_options="QG0")
+    fresh = drange.ConvexHull(points, qhull_options="QG0")
+    assert simplex_set(grown.simplices) == simplex_set(fresh.simplices)
+    assert np.array_equal(grown.vertices, fresh.vertices)
+    assert grown.volume == fresh.volume and np.array_equal(grown.good, fresh.good)
+    square = np.array([[-1.0, 0, 0], [1, 0, -1], [0, -1, 0], [0, 1, -1]])
+    cut = np.array([[1.0, 1, -1.5]])
+    grown = drange.HalfspaceIntersection(square, [0.5, 0.5], incremental=True)
+    grown.add_halfspaces(cut)
+    fresh = drange.HalfspaceIntersection(np.r_[square, cut], [0.5, 0.5])
+    assert np.allclose(np.sort(grown.intersections, axis=0), np.sort(fresh.intersections, axis=0))
+    assert grown.dual_facets == fresh.dual_facets
