@@ -5,7 +5,8 @@ them: wall time of the call (conversion and result arrays included), best of `--
 
 Prints one Markdown table: time of each, and the ratio drange/scipy (below 1: drange faster).
 ConvexHull rows read `volume` from both (scipy computes it in the constructor, drange on first
-use). `--only ConvexHull` runs those rows alone.
+use); add_points rows add one point to an incremental triangulation per repetition. `--only
+ConvexHull` runs those rows alone.
 """
 import argparse
 import os
@@ -52,7 +53,19 @@ def cases(quick):
     ours.find_simplex(queries[:10])  # builds the locator outside the timing, as scipy's is built with the triangulation
     yield f"find_simplex {n} queries, 100000 points 2D", (lambda: ours.find_simplex(queries)), \
         (lambda: theirs.find_simplex(queries))
+    yield from add_points_cases(rng, quick)
     yield from hull_cases(rng, quick)
+
+
+def add_points_cases(rng, quick):
+    """add_points of one point to a triangulation of n (incremental=True): each repetition adds
+    the next point of a list, the triangulations built outside the timing."""
+    for d, n in ((2, 100000 if quick else 1000000), (3, 30000 if quick else 200000)):
+        points, extra = rng.random((n, d)), rng.random((1000, d))
+        ours, theirs = drange.Delaunay(points, incremental=True), scipy.spatial.Delaunay(points, incremental=True)
+        ours_next, theirs_next = iter(extra), iter(extra)
+        yield f"Delaunay add_points 1 point to {d}D {n}", (lambda: ours.add_points(next(ours_next)[None])), \
+            (lambda: theirs.add_points(next(theirs_next)[None]))
 
 
 def hull_cases(rng, quick):
