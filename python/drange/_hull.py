@@ -104,6 +104,11 @@ class ConvexHull(PointSetAttributes):
             vertices = self._core.vertices
         else:
             # Point n is not part of the hull (scipy's QGn): the hull of the others, renumbered.
+            # A bad coordinate is named here, by its index among all the points.
+            bad = np.argwhere(~np.isfinite(self.points))
+            if len(bad):
+                i, k = bad[0]
+                raise ValueError(f"point {i}, coordinate {k} is {'NaN' if np.isnan(self.points[i, k]) else 'infinite'}")
             n, visible = good
             kept = np.delete(np.arange(self.npoints, dtype=np.int32), n)
             self._core = _drange.convex_hull(np.ascontiguousarray(self.points[kept]))

@@ -114,14 +114,22 @@ class PointSetAttributes:
         restart=True builds the state again from all the points; without it only the change is
         computed. Raises RuntimeError without incremental=True or after close()."""
         state = self._incremental_state()
-        everything = np.concatenate([self.points, as_added_points(points, self.ndim)])
+        previous = self.points
+        everything = np.concatenate([previous, as_added_points(points, self.ndim)])
         if restart:
             state = self._incremental = self._new_incremental(everything)
         else:
             state.add_points(everything[self.npoints:])
         self.points = everything
         self._forget_cached()
-        self._take_incremental_result()
+        try:
+            self._take_incremental_result()
+        except BaseException:
+            # A class that computes again on every add (ConvexHull) fails here on bad points:
+            # the object goes back to the points before.
+            self.points = previous
+            self._take_incremental_result()
+            raise
 
     npoints = property(lambda self: self.points.shape[0], doc="Number of input points.")
     ndim = property(lambda self: self.points.shape[1], doc="Dimension of the space.")

@@ -106,6 +106,9 @@ def test_hull_and_halfspaces_grown_equal_fresh():
     assert simplex_set(grown.simplices) == simplex_set(fresh.simplices)
     assert np.array_equal(grown.vertices, fresh.vertices)
     assert grown.volume == fresh.volume and np.array_equal(grown.good, fresh.good)
+    with pytest.raises(ValueError, match="point 150, coordinate 2 is NaN"):
+        grown.add_points([[0.0, 0.0, np.nan]])
+    assert grown.npoints == 150 and simplex_set(grown.simplices) == simplex_set(fresh.simplices)
     square = np.array([[-1.0, 0, 0], [1, 0, -1], [0, -1, 0], [0, 1, -1]])
     cut = np.array([[1.0, 1, -1.5]])
     grown = drange.HalfspaceIntersection(square, [0.5, 0.5], incremental=True)
