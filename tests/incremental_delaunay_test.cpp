@@ -4,14 +4,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
 #include "drange/generate.hpp"
+#include "drange/hull.hpp"
 #include "drange/incremental.hpp"
+#include "oracle.hpp"
 #include "triangulation_checks.hpp"
 
 namespace {
@@ -126,6 +130,80 @@ TEST(IncrementalDelaunay, BadInputIsRefusedAndLeavesTheTriangulation) {
   EXPECT_EQ(t.triangulation().simplices, before);
   t.add_points(PointsView(bad.data(), 0, 2));  // nothing to add
   EXPECT_EQ(t.size(), 50u);
+}
+
+}  // namespace
+
+namespace {
+
+// The volume of a simplex in doubles: |det[p_1 - p_0; ...]| / d!, by elimination.
+double simplex_volume(const PointCloud& points, const std::vector<std::int32_t>& ids) {
+  const int d = points.dim;
+  std::vector<std::vector<double>> a(static_cast<std::size_t>(d), std::vector<double>(static_cast<std::size_t>(d)));
+  for (int r = 0; r < d; ++r)
+    for (int c = 0; c < d; ++c)
+      a[r][c] = points.point(static_cast<std::size_t>(ids[r + 1]))[c] - points.point(static_cast<std::size_t>(ids[0]))[c];
+  double det = 1.0;
+  for (int c = 0; c < d; ++c) {
+    int pivot = c;
+    for (int r = c + 1; r < d; ++r)
+      if (std::fabs(a[r][c]) > std::fabs(a[pivot][c])) pivot = r;
+    std::swap(a[c], a[pivot]);
+    if (a[c][c] == 0.0) return 0.0;
+    det *= a[c][c];
+    for (int r = c + 1; r < d; ++r) {
+      const double f = a[r][c] / a[c][c];
+      for (int k = c; k < d; ++k) a[r][k] -= f * a[c][k];
+    }
+  }
+  for (int k = 2; k <= d; ++k) det /= k;
+  return std::fabs(det);
+}
+
+// The furthest-site triangulation's defining properties, exactly: every simplex is positively
+// oriented and its closed circumsphere holds every point; the simplices tile the convex hull
+// (their volumes sum to the hull's, each hull facet is a facet of one simplex with no
+// neighbour); the vertices are the hull's vertices.
+void expect_furthest_site(const PointCloud& points, const Triangulation& t, const std::string& what) {
+  const int d = points.dim;
+  const drange::ConvexHull hull = drange::convex_hull(points);
+  double volume = 0.0;
+  std::set<std::int32_t> used;
+  for (std::size_t s = 0; s < t.size(); ++s) {
+    const std::vector<std::int32_t> ids(t.simplex(s), t.simplex(s) + d + 1);
+    const std::vector<const double*> corner = drange::test::corners(points, ids);
+    ASSERT_EQ(drange::test::reference_orientation(d, corner), 1) << what << " simplex " << s;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      ASSERT_GE(drange::test::reference_in_sphere(d, corner, points.point(i)), 0) << what << " simplex " << s << " point " << i;
+    used.insert(ids.begin(), ids.end());
+    volume += simplex_volume(points, ids);
+  }
+  EXPECT_EQ(used, std::set<std::int32_t>(hull.vertices.begin(), hull.vertices.end())) << what;
+  EXPECT_NEAR(volume, drange::hull_geometry(points, hull).volume, 1e-9 * volume) << what;
+  expect_consistent_adjacency(points, t);
+}
+
+TEST(FurthestSite, RandomAndDegenerateInputs) {
+  PointCloud square_and_centre{2, {0, 0, 1, 0, 0, 1, 1, 1, 0.5, 0.5}};
+  const std::vector<std::pair<std::string, PointCloud>> cases = {
+      {"uniform 2D", drange::generate_points(Distribution::Uniform, 200, 2, 1)},
+      {"uniform 3D", drange::generate_points(Distribution::Uniform, 200, 3, 2)},
+      {"uniform 4D", drange::generate_points(Distribution::Uniform, 80, 4, 3)},
+      {"circle", drange::generate_points(Distribution::Sphere, 60, 2, 4)},
+      {"sphere 3D", drange::generate_points(Distribution::Sphere, 60, 3, 5)},
+      {"square and centre", square_and_centre},
+      {"grid 2D 6x6", grid(2, 6)},
+      {"grid 3D 4^3", grid(3, 4)},
+  };
+  for (const auto& [name, points] : cases) {
+    const Triangulation whole = IncrementalDelaunay(points, true).triangulation();
+    expect_furthest_site(points, whole, name);
+    // Grown a point at a time (from a third of them, which spans E^d): the same simplices.
+    const std::size_t initial = std::max(points.size() / 3 + 1, static_cast<std::size_t>(points.dim + 1));
+    IncrementalDelaunay grown_one(rows(points, 0, initial), true);
+    for (std::size_t i = initial; i < points.size(); ++i) grown_one.add_points(rows(points, i, i + 1));
+    EXPECT_EQ(canonical(grown_one.triangulation()), canonical(whole)) << name;
+  }
 }
 
 }  // namespace

@@ -18,12 +18,17 @@ namespace drange {
 // (the simplices created and removed, and a walk to each new point), plus one pass over an
 // array of the points to keep their lexicographic ranks; the initial points are inserted in a
 // biased randomized order, as Options::algorithm "incremental" does. One thread.
+//
+// With `furthest_site`, the furthest-site Delaunay triangulation instead: the simplices whose
+// circumspheres hold every point (the upper hull of the lifted points), under the same
+// perturbation; its vertices are the extreme points alone (the others are in no simplex), and
+// neighbours are -1 on the convex hull, as for the Delaunay triangulation.
 class IncrementalDelaunay {
  public:
   // Triangulates `points`. Throws as delaunay(): InputError (NaN or infinite coordinate, a
   // dimension outside 2..11), DegenerateInputError (fewer than d+1 distinct points, or all in
   // one hyperplane).
-  explicit IncrementalDelaunay(PointsView points);
+  explicit IncrementalDelaunay(PointsView points, bool furthest_site = false);
   ~IncrementalDelaunay();
   IncrementalDelaunay(IncrementalDelaunay&&) noexcept;
   IncrementalDelaunay& operator=(IncrementalDelaunay&&) noexcept;

@@ -13,6 +13,11 @@
 //   within H whatever a is (the term of a's perturbation has the coefficient
 //   orientation(F, q) = 0). So a point on a hull hyperplane conflicts with the infinite cell
 //   exactly when it conflicts with the finite cell across, and the cavity stays star-shaped.
+//
+// For the furthest-site triangulation (the upper hull of the lifted points, which is the lower
+// hull of the points lifted by -|x|^2) the lifted determinant's sign is reversed: a point is in
+// conflict with a finite cell when it is strictly outside its circumsphere. Everything else,
+// the argument above included, holds with the lift negated.
 #pragma once
 
 #include <array>
@@ -31,8 +36,8 @@ namespace drange::engine {
 
 class CellPredicates {
  public:
-  CellPredicates(const KernelPoints& points, const CellComplex& cells)
-      : points_(points), cells_(cells), d_(points.dim),
+  CellPredicates(const KernelPoints& points, const CellComplex& cells, bool furthest_site)
+      : points_(points), cells_(cells), d_(points.dim), conflict_sign_(furthest_site ? 1 : -1),
         rows_(static_cast<std::size_t>(points.dim + 2)), ranks_(static_cast<std::size_t>(points.dim + 2)) {}
 
   // Sign of the orientation of finite cell c with q in place of vertex k: negative exactly when
@@ -53,32 +58,33 @@ class CellPredicates {
 
   bool in_conflict(std::int32_t c, std::int32_t q) {
     const int infinite = cells_.infinite_position(c);
-    if (infinite < 0) return inside_sphere(c, q);
+    if (infinite < 0) return finite_conflict(c, q);
     // q in kInfinite's place: positive when q is strictly beyond the hull facet.
     const int s = side(c, infinite, q);
     if (s != 0) return s > 0;
-    return inside_sphere(cells_.neighbors(c)[infinite], q);
+    return finite_conflict(cells_.neighbors(c)[infinite], q);
   }
 
-  // Whether q is strictly inside finite cell c's circumsphere, under the perturbation. The cell
-  // is positively oriented, so inside is a negative lifted determinant (geometry::in_sphere).
-  bool inside_sphere(std::int32_t c, std::int32_t q) {
+  // Whether q is in conflict with finite cell c: strictly inside its circumsphere under the
+  // perturbation (strictly outside for the furthest site). The cell is positively oriented, so
+  // inside is a negative lifted determinant (geometry::in_sphere).
+  bool finite_conflict(std::int32_t c, std::int32_t q) {
     const std::int32_t* v = cells_.vertices(c);
     for (int i = 0; i <= d_; ++i) rows_[static_cast<std::size_t>(i)] = points_.point(v[i]);
     rows_[static_cast<std::size_t>(d_ + 1)] = points_.point(q);
     if (points_.scaled && d_ <= 3) {
       const int s = d_ == 2 ? filtered_lifted_sign<2>() : filtered_lifted_sign<3>();
-      if (s != 0) return s < 0;
+      if (s != 0) return s == conflict_sign_;
     }
     ++unfiltered_;
     const geometry::Frame frame{d_, d_, nullptr, rows_[0]};
     // Double-double first: points within rounding of a sphere, not on it (circles, spheres,
     // rings of a mesh), are decided there; ties go on to the exact stages and the perturbation.
-    if (const std::optional<int> s = geometry::refined_lifted_sign(frame, rows_.data() + 1); s && *s != 0) return *s < 0;
+    if (const std::optional<int> s = geometry::refined_lifted_sign(frame, rows_.data() + 1); s && *s != 0) return *s == conflict_sign_;
     // The ranks only now: the perturbation needs them, and each is a read far from the cell.
     for (int i = 0; i <= d_; ++i) ranks_[static_cast<std::size_t>(i)] = points_.rank(v[i]);
     ranks_[static_cast<std::size_t>(d_ + 1)] = points_.rank(q);
-    return geometry::lifted_sign_perturbed(frame, rows_.data() + 1, ranks_.data()) < 0;
+    return geometry::lifted_sign_perturbed(frame, rows_.data() + 1, ranks_.data()) == conflict_sign_;
   }
 
   // Tests that the fast filters did not decide (or that had none: d > 3, unscaled points),
@@ -151,6 +157,7 @@ class CellPredicates {
   const KernelPoints& points_;
   const CellComplex& cells_;
   int d_;
+  int conflict_sign_;  // the lifted determinant's sign for a point in conflict with a finite cell
   std::vector<const double*> rows_;
   std::vector<std::int64_t> ranks_;
   std::uint64_t unfiltered_ = 0;

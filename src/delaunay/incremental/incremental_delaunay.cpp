@@ -159,14 +159,14 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-IncrementalDelaunay::IncrementalDelaunay(PointsView points) : state_(std::make_unique<State>()) {
+IncrementalDelaunay::IncrementalDelaunay(PointsView points, bool furthest_site) : state_(std::make_unique<State>()) {
   const auto start = std::chrono::steady_clock::now();
   State& s = *state_;
   util::check_points(points, "triangulates");
   s.dim = points.dim;
   const std::vector<std::int32_t> distinct = s.append(points);
   const std::vector<std::int32_t> first = s.first_simplex(distinct);
-  s.insertion = std::make_unique<Insertion>(s.view, distinct.size(), s.counters);
+  s.insertion = std::make_unique<Insertion>(s.view, distinct.size(), s.counters, furthest_site);
   s.insertion->start(first.data());
   s.insert(distinct, first);
   s.seconds += seconds_since(start);

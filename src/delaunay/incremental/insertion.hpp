@@ -28,8 +28,12 @@ class Insertion {
  public:
   // `points` must outlive the insertion; its arrays may be replaced (grown) between insertions,
   // the view updated in place. `expected_points` reserves room for their cells.
-  Insertion(const KernelPoints& points, std::size_t expected_points, IncrementalCounters& counters)
-      : cells_(points.dim), test_(points, cells_), width_(points.dim + 1), counters_(counters) {
+  // `furthest_site`: the furthest-site triangulation (CellPredicates), of the extreme points
+  // alone; a point inside the hull of those inserted before conflicts with no cell.
+  Insertion(const KernelPoints& points, std::size_t expected_points, IncrementalCounters& counters,
+            bool furthest_site = false)
+      : cells_(points.dim), test_(points, cells_, furthest_site), width_(points.dim + 1), counters_(counters),
+        furthest_site_(furthest_site) {
     cells_.reserve(expected_points * 8);
   }
 
@@ -62,14 +66,20 @@ class Insertion {
     last_ = first;
   }
 
-  void insert(std::int32_t q) {
+  // Inserts q; false when q conflicts with no cell (the furthest site: q is in the closed hull
+  // of the points before, where the walk ends in a finite cell that holds it, and its lift is
+  // beneath every cell's).
+  bool insert(std::int32_t q) {
     if (stamp_ > kLastStamp) {
       cells_.clear_marks();
       stamp_ = 0;
     }
     stamp_ += 4;
-    find_conflicts(q, locate(q));
+    const std::int32_t start = locate(q);
+    if (furthest_site_ && cells_.infinite_position(start) < 0) return false;
+    find_conflicts(q, start);
     fill_cavity(q);
+    return true;
   }
 
   const CellComplex& cells() const { return cells_; }
@@ -196,6 +206,7 @@ class Insertion {
   CellPredicates test_;
   int width_;
   IncrementalCounters& counters_;
+  bool furthest_site_;
   std::int32_t stamp_ = 0;
   std::int32_t last_ = 0;
   std::size_t finite_cells_ = 1;
