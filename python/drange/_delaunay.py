@@ -29,10 +29,13 @@ class Delaunay(PointSetAttributes):
     ----------
     points : array_like, shape (npoints, ndim)
         Coordinates of the points, 2 <= ndim <= 11.
-    furthest_site, qhull_options
-        scipy's arguments, accepted so that code switches in one line. furthest_site=True
-        raises NotImplementedError; qhull_options has no effect, since no decision needs a
-        tolerance, except that 'QJ' (joggling) raises ValueError: drange never joggles.
+    furthest_site : bool
+        The furthest-site triangulation instead: the simplices whose circumspheres hold every
+        point (the upper hull of the lifted points), exact under the same perturbation, built
+        by insertion as with incremental=True. Only the extreme points are vertices.
+    qhull_options
+        scipy's argument, accepted so that code switches in one line; it has no effect, since no
+        decision needs a tolerance, except that 'QJ' (joggling) raises ValueError.
     incremental : bool
         Allow add_points: the triangulation is kept by insertion (the "incremental"
         algorithm, one thread; `variant` and `algorithm` are then not used), and each call
@@ -83,19 +86,20 @@ class Delaunay(PointSetAttributes):
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None, *,
                  threads=0, variant="full", algorithm="auto", progress=None):
-        check_scipy_arguments(furthest_site, qhull_options)
+        check_scipy_arguments(qhull_options)
         check_options(variant, threads, algorithm)
         self.points = as_points(points)
+        self.furthest_site = bool(furthest_site)
         self._arguments = {"threads": int(threads), "variant": variant, "algorithm": algorithm,
-                           "incremental": bool(incremental)}
+                           "incremental": bool(incremental), "furthest_site": self.furthest_site}
         self._threads = int(threads)
-        if incremental:
-            self._incremental = self._new_incremental(self.points)
-            self._take_incremental_result()
+        if incremental or furthest_site:
+            state = self._new_incremental(self.points)
+            self._incremental = state if incremental else None
+            self._take(state.triangulated(self.points))
         else:
             self._incremental = None
             self._take(_drange.triangulate(self.points, variant, algorithm, int(threads), progress))
-        self.furthest_site = False
         self.paraboloid_scale = 1.0
         self.paraboloid_shift = 0.0
 
@@ -105,9 +109,8 @@ class Delaunay(PointSetAttributes):
         self.neighbors = core.neighbors
         self.statistics = core.statistics
 
-    @staticmethod
-    def _new_incremental(points):
-        return _drange.IncrementalDelaunay(points)
+    def _new_incremental(self, points):
+        return _drange.IncrementalDelaunay(points, self.furthest_site)
 
     def _take_incremental_result(self):
         self._take(self._incremental.triangulated(self.points))
@@ -193,8 +196,9 @@ class Delaunay(PointSetAttributes):
     @cached_property
     def equations(self):
         """(nsimplex, ndim+2): the hyperplane [normal, offset] of each simplex lifted to the
-        paraboloid x -> (x, |x|^2), with a unit normal pointing down (out of the lifted hull).
-        The distance of a lifted point is positive inside the simplex's circumsphere."""
+        paraboloid x -> (x, |x|^2), with a unit normal pointing out of the lifted hull: down, so
+        that the distance of a lifted point is positive inside the simplex's circumsphere; up
+        for the furthest site (positive outside)."""
         d = self.ndim
         corners = self.points[self.simplices]
         base = corners[:, 0, :]
@@ -209,7 +213,7 @@ class Delaunay(PointSetAttributes):
         result[:, d] = -1.0
         result[:, d + 1] = radius2 - np.einsum("ij,ij->i", centre, centre)
         result /= np.linalg.norm(result[:, :d + 1], axis=1)[:, None]
-        return result
+        return -result if self.furthest_site else result
 
     def lift_points(self, x):
         """Lifts points to the paraboloid: (x, |x|^2 * paraboloid_scale + paraboloid_shift)."""

@@ -85,7 +85,7 @@ class HalfspaceIntersection:
     """
 
     def __init__(self, halfspaces, interior_point, incremental=False, qhull_options=None):
-        check_scipy_arguments(False, qhull_options)
+        check_scipy_arguments(qhull_options)
         halfspaces = np.ascontiguousarray(np.asarray(halfspaces, dtype=np.float64))
         if halfspaces.ndim != 2 or halfspaces.shape[1] < 3:
             raise ValueError(f"halfspaces must be a 2-D array of shape (nineq, ndim+1) with ndim >= 2; got shape {halfspaces.shape}")

@@ -87,7 +87,7 @@ class ConvexHull(PointSetAttributes):
     """
 
     def __init__(self, points, incremental=False, qhull_options=None):
-        check_scipy_arguments(False, qhull_options)
+        check_scipy_arguments(qhull_options)
         self.points = as_points(points)
         self._arguments = {"qhull_options": qhull_options}
         self._incremental = _Rebuilt() if incremental else None

@@ -25,10 +25,8 @@ def as_added_points(points, ndim):
     return np.ascontiguousarray(array)
 
 
-def check_scipy_arguments(furthest_site, qhull_options):
-    """scipy's constructor arguments: accepted where they make sense here."""
-    if furthest_site:
-        raise NotImplementedError("furthest_site=True is not supported by drange")
+def check_scipy_arguments(qhull_options):
+    """scipy's qhull_options: accepted where they make sense here."""
     if qhull_options is not None and not isinstance(qhull_options, (str, bytes)):
         raise TypeError(f"qhull_options must be a string or None; got {type(qhull_options).__name__}")
     options = qhull_options.decode() if isinstance(qhull_options, bytes) else (qhull_options or "")

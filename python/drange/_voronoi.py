@@ -20,6 +20,10 @@ class Voronoi(PointSetAttributes):
     Parameters are scipy's (see drange.Delaunay for furthest_site, incremental (add_points),
     qhull_options, threads, variant, algorithm and progress), plus:
 
+    With furthest_site=True the furthest-site diagram: each point's region is where it is the
+    farthest point; every region is unbounded (volume inf) and a point that is not extreme has
+    an empty one (volume 0).
+
     cell_volumes : bool, keyword only
         Compute the volume of every bounded cell (default True).
 
@@ -50,21 +54,22 @@ class Voronoi(PointSetAttributes):
 
     def __init__(self, points, furthest_site=False, incremental=False, qhull_options=None, *,
                  threads=0, variant="full", algorithm="auto", cell_volumes=True, progress=None):
-        check_scipy_arguments(furthest_site, qhull_options)
+        check_scipy_arguments(qhull_options)
         check_options(variant, threads, algorithm)
         self.points = as_points(points)
+        self.furthest_site = bool(furthest_site)
         self._arguments = {"threads": int(threads), "variant": variant, "algorithm": algorithm,
                            "cell_volumes": bool(cell_volumes), "incremental": bool(incremental),
-                           "qhull_options": qhull_options}
+                           "qhull_options": qhull_options, "furthest_site": self.furthest_site}
         options = qhull_options.decode() if isinstance(qhull_options, bytes) else (qhull_options or "")
         self._region_at_infinity = "Qz" in options.split()
-        if incremental:
-            self._incremental = self._new_incremental(self.points)
-            self._take_incremental_result()
+        if incremental or furthest_site:
+            state = self._new_incremental(self.points)
+            self._incremental = state if incremental else None
+            self._take(state.diagram(self.points, bool(cell_volumes)))
         else:
             self._incremental = None
             self._take(_drange.voronoi(self.points, variant, algorithm, int(threads), bool(cell_volumes), progress))
-        self.furthest_site = False
 
     def _take(self, core):
         self._core = core
@@ -76,14 +81,23 @@ class Voronoi(PointSetAttributes):
         self.statistics = core.statistics
         volumes = core.volumes
         self.volumes = volumes if len(volumes) == len(self.region_point) else np.full(len(self.region_point), np.nan)
+        # The furthest site: a point that is not extreme is no simplex's vertex and has no
+        # region in the engine's diagram; as in scipy, it gets one of its own, empty.
+        self._empty_regions = 0
+        if self.furthest_site:
+            inner = np.flatnonzero(self.point_region < 0).astype(np.int32)
+            self._empty_regions = len(inner)
+            self.point_region = self.point_region.copy()
+            self.point_region[inner] = len(self.region_point) + np.arange(len(inner), dtype=np.int32)
+            self.region_point = np.r_[self.region_point, inner]
+            self.volumes = np.r_[self.volumes, np.zeros(len(inner))]
         if self._region_at_infinity:
             self.point_region = self.point_region + 1
             self.region_point = np.r_[np.int32(-1), self.region_point]
             self.volumes = np.r_[np.nan, self.volumes]
 
-    @staticmethod
-    def _new_incremental(points):
-        return _drange.IncrementalDelaunay(points)
+    def _new_incremental(self, points):
+        return _drange.IncrementalDelaunay(points, self.furthest_site)
 
     def _take_incremental_result(self):
         self._take(self._incremental.diagram(self.points, self._arguments["cell_volumes"]))
@@ -94,7 +108,7 @@ class Voronoi(PointSetAttributes):
 
     @cached_property
     def regions(self):
-        regions = _rows(self._core.region_offsets, self._core.region_indices)
+        regions = _rows(self._core.region_offsets, self._core.region_indices) + [[] for _ in range(self._empty_regions)]
         # Qhull's option Qz adds a point at infinity, whose region is empty and no point's.
         return [[]] + regions if self._region_at_infinity else regions
 

@@ -273,9 +273,9 @@ PYBIND11_MODULE(_drange, m) {
   // array of every point added and passes it to each result, which views it. Calls hold the
   // GIL: the object changes, and two Python threads must not change it at once.
   py::class_<IncrementalDelaunay>(m, "IncrementalDelaunay")
-      .def(py::init([](const Points& points) {
-        return std::make_unique<IncrementalDelaunay>(points_view(points, "points"));
-      }), py::arg("points"))
+      .def(py::init([](const Points& points, bool furthest_site) {
+        return std::make_unique<IncrementalDelaunay>(points_view(points, "points"), furthest_site);
+      }), py::arg("points"), py::arg("furthest_site") = false)
       .def("add_points", [](IncrementalDelaunay& t, const Points& points) {
         t.add_points(points_view(points, "points"));
       }, py::arg("points"))

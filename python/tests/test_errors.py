@@ -48,7 +48,6 @@ def test_degenerate_input(cls, points, message):
     ({"threads": -1}, ValueError, "threads must be 0"),
     ({"threads": "2"}, TypeError, "threads must be an integer"),
     ({"threads": True}, TypeError, "threads must be an integer"),
-    ({"furthest_site": True}, NotImplementedError, "furthest_site"),
     ({"qhull_options": 5}, TypeError, "qhull_options"),
 ])
 def test_bad_options(kwargs, error, message):

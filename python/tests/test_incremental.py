@@ -7,6 +7,8 @@ import pickle
 import numpy as np
 import pytest
 
+import scipy.spatial
+
 import drange
 
 
@@ -116,3 +118,52 @@ def test_hull_and_halfspaces_grown_equal_fresh():
     fresh = drange.HalfspaceIntersection(np.r_[square, cut], [0.5, 0.5])
     assert np.allclose(np.sort(grown.intersections, axis=0), np.sort(fresh.intersections, axis=0))
     assert grown.dual_facets == fresh.dual_facets
+
+
+@pytest.mark.parametrize("ndim", [2, 3, 4])
+def test_furthest_site_agrees_with_scipy(ndim):
+    # Random points: the furthest-site triangulation is unique, so Qhull's is the same.
+    points = np.random.default_rng(20 + ndim).random((60, ndim))
+    ours = tri = drange.Delaunay(points, furthest_site=True)
+    theirs = scipy.spatial.Delaunay(points, furthest_site=True)
+    assert ours.furthest_site and simplex_set(ours.simplices) == simplex_set(theirs.simplices)
+    assert simplex_set(ours.convex_hull) == simplex_set(theirs.convex_hull)
+    inner = np.setdiff1d(np.arange(len(points)), ours.simplices)
+    assert (ours.vertex_to_simplex[inner] == -1).all()
+    grown = grow(drange.Delaunay, points, 20, 7, furthest_site=True)
+    assert simplex_set(grown.simplices) == simplex_set(ours.simplices)
+    if ndim <= 3:
+        ours, theirs = drange.Voronoi(points, furthest_site=True), scipy.spatial.Voronoi(points, furthest_site=True)
+        assert ours.furthest_site
+        assert np.allclose(np.sort(ours.vertices, axis=0), np.sort(theirs.vertices, axis=0))
+        # scipy leaves out a ridge with one finite vertex (an edge in a single tetrahedron,
+        # docs/formats.md); drange keeps it.
+        extra = set(simplex_set(ours.ridge_points)) - set(simplex_set(theirs.ridge_points))
+        assert set(simplex_set(theirs.ridge_points)) <= set(simplex_set(ours.ridge_points))
+        assert all(sorted(ours.ridge_dict.get(k, ours.ridge_dict.get(k[::-1])))[0] == -1 and
+                   len(ours.ridge_dict.get(k, ours.ridge_dict.get(k[::-1]))) == 2 for k in extra)
+        assert ndim == 3 or not extra
+        # Each point's region: the same vertices (as coordinates); empty for inner points.
+        for p in range(len(points)):
+            a = ours.regions[ours.point_region[p]]
+            b = theirs.regions[theirs.point_region[p]]
+            assert (-1 in a) == (-1 in b) and len(a) == len(b), p
+        assert np.isinf(ours.volumes[ours.point_region[tri.simplices.ravel()]]).all()
+        assert (ours.volumes[ours.point_region[inner]] == 0).all()
+
+
+def test_furthest_site_degenerate():
+    # A grid: its furthest-site triangulation uses the four corners alone, two triangles
+    # whose circumcircle is the one through all four (a tie the perturbation breaks).
+    grid = np.array([(x, y) for x in range(5) for y in range(5)], dtype=float)
+    tri = drange.Delaunay(grid, furthest_site=True)
+    assert tri.nsimplex == 2 and set(tri.simplices.ravel().tolist()) == {0, 4, 20, 24}
+    assert drange.Voronoi(grid, furthest_site=True).vertices.tolist() == [[2.0, 2.0]]
+
+
+def test_furthest_site_equations_point_out_of_the_lifted_hull():
+    points = np.random.default_rng(4).random((40, 2))
+    tri = drange.Delaunay(points, furthest_site=True)
+    lifted = tri.lift_points(points)
+    distances = lifted @ tri.equations[:, :-1].T + tri.equations[:, -1]
+    assert (distances <= 1e-12).all()  # every point on or beneath every upper facet

@@ -52,6 +52,21 @@ def test_order_only_voronoi_and_halfspaces():
     assert sorted(map(tuple, ours.intersections.tolist())) == sorted(map(tuple, qhull.intersections.tolist()))
 
 
+def test_order_only_furthest_site():
+    # test_furthest_site (Delaunay, Voronoi): Qhull's simplices in another order, and its
+    # regions as sets of vertices; Qhull lists one region clockwise, drange every one
+    # counter-clockwise (the unbounded part first).
+    points = np.array([(0, 0), (0, 1), (1, 0), (0.5, 0.5), (1.1, 1.1)])
+    ours, qhull = drange.Delaunay(points, furthest_site=True), scipy.spatial.Delaunay(points, furthest_site=True)
+    assert facet_set(ours.simplices) == facet_set(qhull.simplices)
+    ours, qhull = drange.Voronoi(points, furthest_site=True), scipy.spatial.Voronoi(points, furthest_site=True)
+    assert np.array_equal(ours.vertices, qhull.vertices)
+    for p in range(len(points)):
+        assert set(ours.regions[ours.point_region[p]]) == set(qhull.regions[qhull.point_region[p]])
+    # Points 0 and 4 share the ridge from vertex 0 to vertex 1: region 4 lies on its left.
+    assert ours.regions[ours.point_region[4]] == [-1, 0, 1] and ours.regions[ours.point_region[0]] == [-1, 1, 0]
+
+
 def test_exact_where_qhull_rounds():
     # pathological-2: (1, -1 - eps) makes (-1, -1), (0, -1), (1, -1 - eps) a true, very flat
     # triangle, whose circumcentre is about 4.5e15 below: drange keeps it (exactly Delaunay),
