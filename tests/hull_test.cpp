@@ -350,3 +350,20 @@ TEST(ConvexHull, ThinFirstSimplexUsesTheExactCentroid) {
 
 }  // namespace
 }  // namespace drange
+
+TEST(HullGeometry, ThinFacetsGetTheirNormalsExactly) {
+  // A facet whose minors underflow in doubles (edges of 1e-170): its normal is exact, not NaN.
+  const drange::PointCloud points{3, {0, 0, 0, 1e-170, 0, 0, 0, 1e-170, 0, 0, 0, 1e-170}};
+  const drange::ConvexHull hull = drange::convex_hull(points);
+  const drange::HullGeometry geometry = drange::hull_geometry(points, hull);
+  bool slanted = false;
+  for (std::size_t f = 0; f < hull.size(); ++f) {
+    const double* e = geometry.equations.data() + f * 4;
+    EXPECT_NEAR(e[0] * e[0] + e[1] * e[1] + e[2] * e[2], 1.0, 1e-15);
+    if (e[0] > 0 && e[1] > 0 && e[2] > 0) {
+      slanted = true;
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(e[k], 1.0 / std::sqrt(3.0), 1e-15);
+    }
+  }
+  EXPECT_TRUE(slanted);
+}
