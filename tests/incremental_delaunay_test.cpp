@@ -207,3 +207,45 @@ TEST(FurthestSite, RandomAndDegenerateInputs) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(NaturalNeighbours, LinearPrecisionDataPointsOutsideAndErrors) {
+  for (int d = 2; d <= 5; ++d) {
+    const PointCloud points = drange::generate_points(Distribution::Uniform, d <= 3 ? 400 : 250, d, 90 + d);
+    IncrementalDelaunay t(points);
+    std::vector<double> queries;
+    for (int i = 0; i < 8; ++i)
+      for (int k = 0; k < d; ++k) queries.push_back(0.3 + 0.05 * i + 0.01 * k);  // inside: the cube's middle
+    queries.insert(queries.end(), points.point(7), points.point(7) + d);  // a data point
+    queries.insert(queries.end(), static_cast<std::size_t>(d), 2.0);      // outside the hull
+    const auto found = t.natural_neighbours(PointsView(queries.data(), 10, d));
+    ASSERT_EQ(found.offsets.size(), 11u);
+    for (std::size_t q = 0; q < 8; ++q) {
+      std::vector<double> centre(static_cast<std::size_t>(d), 0.0);
+      double total = 0.0;
+      for (std::size_t i = found.offsets[q]; i < found.offsets[q + 1]; ++i) {
+        EXPECT_GT(found.weights[i], 0.0);
+        total += found.weights[i];
+        for (int k = 0; k < d; ++k) centre[static_cast<std::size_t>(k)] += found.weights[i] * points.point(static_cast<std::size_t>(found.ids[i]))[k];
+      }
+      EXPECT_NEAR(total, 1.0, 1e-12) << "d=" << d;
+      for (int k = 0; k < d; ++k) EXPECT_NEAR(centre[static_cast<std::size_t>(k)], queries[q * static_cast<std::size_t>(d) + static_cast<std::size_t>(k)], 1e-12) << "d=" << d;
+    }
+    ASSERT_EQ(found.offsets[9] - found.offsets[8], 1u);
+    EXPECT_EQ(found.ids[found.offsets[8]], 7);
+    EXPECT_EQ(found.weights[found.offsets[8]], 1.0);
+    EXPECT_EQ(found.offsets[10], found.offsets[9]) << "a query outside the hull has no neighbours";
+    EXPECT_EQ(t.triangulation().simplices, IncrementalDelaunay(points).triangulation().simplices) << "probes change nothing";
+  }
+  const PointCloud points = drange::generate_points(Distribution::Uniform, 30, 2, 1);
+  IncrementalDelaunay furthest(points, true);
+  const std::vector<double> x{0.5, 0.5};
+  EXPECT_THROW(furthest.natural_neighbours(PointsView(x.data(), 1, 2)), drange::UsageError);
+  IncrementalDelaunay t(points);
+  EXPECT_THROW(t.natural_neighbours(PointsView(x.data(), 1, 3)), drange::InputError);
+  const std::vector<double> nan{0.5, std::numeric_limits<double>::quiet_NaN()};
+  EXPECT_THROW(t.natural_neighbours(PointsView(nan.data(), 1, 2)), drange::InputError);
+}
+
+}  // namespace

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "drange/delaunay.hpp"
 #include "drange/points.hpp"
@@ -39,6 +41,22 @@ class IncrementalDelaunay {
   // infinite coordinate; the triangulation is then unchanged.
   void add_points(PointsView points);
 
+  // Sibson's natural-neighbour coordinates of each query point x in the triangulation now: the
+  // points whose Voronoi cells x's cell would take volume from, each with that volume over the
+  // volume of x's cell (positive, summing to 1; sum_i w_i p_i = x). A query outside the closed
+  // convex hull of the points or on its boundary, where x's cell is unbounded, has none; one
+  // equal to a point has that point (the first with its coordinates) with weight 1. The cells'
+  // combinatorics are exact (the perturbed triangulation and x's conflicts in it); the volumes
+  // are those of the convex hulls of their vertices, the circumcentres, in floating point.
+  // Throws UsageError for the furthest-site triangulation, InputError for a query of the wrong
+  // dimension or with a NaN or infinite coordinate (naming it).
+  struct NaturalNeighbours {
+    std::vector<std::size_t> offsets;  // query q's neighbours: [offsets[q], offsets[q + 1])
+    std::vector<std::int32_t> ids;     // input indices
+    std::vector<double> weights;
+  };
+  NaturalNeighbours natural_neighbours(PointsView queries);
+
   int dim() const;
   std::size_t size() const;  // points added, duplicates included
 
@@ -49,8 +67,10 @@ class IncrementalDelaunay {
   // add_points calls, the constructor's included.
   Triangulation triangulation(bool neighbors = true) const;
 
- private:
+  // The engine's state, defined in its sources alone (opaque here).
   struct State;
+
+ private:
   std::unique_ptr<State> state_;
 };
 

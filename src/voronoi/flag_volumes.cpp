@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 #include "util/for_ranges.hpp"
 #include "voronoi/extended_real.hpp"
@@ -142,6 +143,22 @@ class SimplexPieces {
 
 }  // namespace
 
+struct SimplexCellParts::Pieces {
+  explicit Pieces(int d) : fast(d), careful(d) {}
+  SimplexPieces<double> fast;
+  SimplexPieces<ExtendedReal> careful;
+};
+
+SimplexCellParts::SimplexCellParts(int d) : d_(d), pieces_(std::make_unique<Pieces>(d)) {}
+SimplexCellParts::~SimplexCellParts() = default;
+
+void SimplexCellParts::compute(PointsView points, const std::int32_t* simplex, double* parts) {
+  const bool flat = pieces_->fast.compute(points, simplex) < kFlatFace;
+  if (flat) pieces_->careful.compute(points, simplex);
+  for (int k = 0; k <= d_; ++k)
+    parts[k] = flat ? static_cast<double>(pieces_->careful.cell_part(k)) : pieces_->fast.cell_part(k);
+}
+
 std::vector<double> flag_cell_volumes(PointsView points, const Triangulation& t, const std::vector<char>& on_hull,
                                       engine::Team& team) {
   const int width = t.dim + 1;
@@ -155,18 +172,12 @@ std::vector<double> flag_cell_volumes(PointsView points, const Triangulation& t,
   for (std::size_t first = 0; first < t.size(); first += kBlock) {
     const std::size_t count = std::min(kBlock, t.size() - first);
     util::for_ranges(count, team, [&](std::size_t, std::size_t begin, std::size_t end) {
-      SimplexPieces<double> fast(t.dim);
-      SimplexPieces<ExtendedReal> careful(t.dim);
+      SimplexCellParts cell_parts(t.dim);
       for (std::size_t i = begin; i < end; ++i) {
         const std::int32_t* row = t.simplex(first + i);
-        double* part = &parts[i * w];
         bool any_interior = false;
         for (int k = 0; k < width; ++k) any_interior |= !on_hull[static_cast<std::size_t>(row[k])];
-        if (!any_interior) continue;  // nothing of it is added
-        const bool flat = fast.compute(points, row) < kFlatFace;
-        if (flat) careful.compute(points, row);
-        for (int k = 0; k < width; ++k)
-          part[k] = flat ? static_cast<double>(careful.cell_part(k)) : fast.cell_part(k);
+        if (any_interior) cell_parts.compute(points, row, &parts[i * w]);  // else nothing of it is added
       }
     }, kSimplicesPerRange);
     for (std::size_t i = 0; i < count; ++i) {

@@ -14,6 +14,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "delaunay/team.hpp"
@@ -21,6 +23,25 @@
 #include "drange/points.hpp"
 
 namespace drange::diagram {
+
+// The part of each of a Delaunay simplex's vertices' Voronoi cells that the simplex's flags
+// cover (signed; a cell's volume is the sum of its parts over the simplices around it), in
+// double, redone in extended precision for a simplex with a nearly flat face. One object is
+// reused for many simplices of one dimension; not shared between threads.
+class SimplexCellParts {
+ public:
+  explicit SimplexCellParts(int d);
+  ~SimplexCellParts();
+  SimplexCellParts(const SimplexCellParts&) = delete;
+  SimplexCellParts& operator=(const SimplexCellParts&) = delete;
+  // parts[k] (d + 1 of them): vertex k's part.
+  void compute(PointsView points, const std::int32_t* simplex, double* parts);
+
+ private:
+  struct Pieces;
+  int d_;
+  std::unique_ptr<Pieces> pieces_;
+};
 
 // Simplices per range of a thread: each is worth microseconds in 4D and more above.
 inline constexpr std::size_t kSimplicesPerRange = 512;

@@ -82,6 +82,21 @@ class Insertion {
     return true;
   }
 
+  // Finds the cells in conflict with q and the facets between them and the others, and
+  // changes nothing: conflicts() and boundary() then hold them until the next call. q must be
+  // no vertex (a copy of none). Not for the furthest site.
+  void probe(std::int32_t q) {
+    if (stamp_ > kLastStamp) {
+      cells_.clear_marks();
+      stamp_ = 0;
+    }
+    stamp_ += 4;
+    find_conflicts(q, locate(q));
+  }
+  const std::vector<std::int32_t>& conflicts() const { return conflicts_; }
+  // (cell, k): the facet of `cell` (in conflict) opposite its vertex k.
+  const std::vector<std::pair<std::int32_t, int>>& boundary() const { return boundary_; }
+
   const CellComplex& cells() const { return cells_; }
   std::uint64_t unfiltered_tests() const { return test_.unfiltered(); }
   // Finite cells in the triangulation now.
