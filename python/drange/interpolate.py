@@ -6,9 +6,12 @@ The names, arguments and calling conventions are scipy.interpolate's, so switchi
 
 LinearNDInterpolator locates each query with the exact `Delaunay.find_simplex` (all threads)
 and weights the values of the simplex's vertices by the query's barycentric coordinates.
+NaturalNeighborInterpolator (drange's own) is Sibson's natural-neighbour interpolant in any
+dimension.
 """
 import numpy as np
 
+from . import _drange
 from ._delaunay import Delaunay
 
 try:  # NearestNDInterpolator's search; a brute-force search stands in without scipy.
@@ -16,7 +19,7 @@ try:  # NearestNDInterpolator's search; a brute-force search stands in without s
 except ImportError:  # pragma: no cover - scipy is optional
     _cKDTree = None
 
-__all__ = ["LinearNDInterpolator", "NearestNDInterpolator", "griddata"]
+__all__ = ["LinearNDInterpolator", "NearestNDInterpolator", "NaturalNeighborInterpolator", "griddata"]
 
 # Queries are weighted in chunks so that the gathered transforms and vertex values stay within
 # a few MiB whatever the number of queries.
@@ -189,6 +192,45 @@ class NearestNDInterpolator(_ScatteredInterpolator):
         else:
             nearest = _nearest_by_scan(self.points, xi)
         return self.values[nearest].reshape(shape + self.values.shape[1:])
+
+
+class NaturalNeighborInterpolator(_ScatteredInterpolator):
+    """Sibson's natural-neighbour interpolant, in any dimension (drange's own; scipy has none).
+
+    The value at x weights the values of x's natural neighbours by the volumes x's Voronoi cell
+    would take from theirs if x were added (Sibson's coordinates): continuous, equal to the data
+    at the points, exact on linear functions, smooth away from the points. Same parameters as
+    LinearNDInterpolator; fill_value outside the convex hull and on its boundary (where x's cell
+    is unbounded). `coordinates(xi)` gives the neighbours and weights themselves. The cells'
+    combinatorics are exact (drange.Delaunay's perturbed triangulation); the volumes are computed
+    in floating point (C++: drange::IncrementalDelaunay::natural_neighbours). One thread.
+    """
+
+    def __init__(self, points, values, fill_value=np.nan, rescale=False):
+        super().__init__(points, values, rescale)
+        self.is_complex = np.iscomplexobj(self.values)
+        dtype = np.complex128 if self.is_complex else np.float64
+        self.values = np.ascontiguousarray(self.values.reshape(len(self.values), -1), dtype=dtype)
+        self.fill_value = complex(fill_value) if self.is_complex else float(fill_value)
+        self._state = _drange.IncrementalDelaunay(self.points)
+
+    def coordinates(self, *args):
+        """(offsets, ids, weights) for the queries xi flattened to (m, ndim): query q's natural
+        neighbours are ids[offsets[q]:offsets[q+1]] with those weights (summing to 1); none
+        outside the hull."""
+        xi, _ = self._queries(args)
+        return self._state.natural_neighbours(xi)
+
+    def __call__(self, *args):
+        """The interpolant at xi, shaped as LinearNDInterpolator's answer."""
+        xi, shape = self._queries(args)
+        offsets, ids, weights = self._state.natural_neighbours(xi)
+        result = np.full((len(xi), self.values.shape[1]), self.fill_value, dtype=self.values.dtype)
+        inside = np.flatnonzero(offsets[1:] > offsets[:-1])
+        if len(inside):
+            # Empty queries hold no entries, so each kept start runs to the next kept one.
+            result[inside] = np.add.reduceat(weights[:, None] * self.values[ids], offsets[inside], axis=0)
+        return result.reshape(shape + self.values_shape)
 
 
 def _nearest_by_scan(points, xi):

@@ -279,6 +279,13 @@ PYBIND11_MODULE(_drange, m) {
       .def("add_points", [](IncrementalDelaunay& t, const Points& points) {
         t.add_points(points_view(points, "points"));
       }, py::arg("points"))
+      .def("natural_neighbours", [](IncrementalDelaunay& t, const Points& queries) {
+        IncrementalDelaunay::NaturalNeighbours found = t.natural_neighbours(points_view(queries, "xi"));
+        std::vector<std::int64_t> offsets(found.offsets.begin(), found.offsets.end());
+        const auto count = static_cast<py::ssize_t>(found.ids.size());
+        return py::make_tuple(adopt(std::move(offsets), {static_cast<py::ssize_t>(found.offsets.size())}),
+                              adopt(std::move(found.ids), {count}), adopt(std::move(found.weights), {count}));
+      }, py::arg("queries"))
       .def("triangulated", [](const IncrementalDelaunay& t, Points all_points) {
         auto triangulated = std::make_unique<Triangulated>();
         triangulated->result = t.triangulation();
