@@ -10,6 +10,7 @@
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
 #include "drange/formats.hpp"
+#include "drange/incremental.hpp"
 #include "drange/io.hpp"
 #include "drange/svg.hpp"
 #include "exit_codes.hpp"
@@ -22,7 +23,7 @@ namespace {
 const std::vector<OptionSpec> kOptions = {
     {"output", 'o', true}, {"format", 0, true},  {"neighbors", 0, true}, {"svg", 0, true},
     {"circles", 0, false}, {"stats", 0, false}, {"variant", 0, true},   {"threads", 0, true},
-    {"quiet", 'q', false}, {"algorithm", 0, true}, {"only", 0, true},
+    {"quiet", 'q', false}, {"algorithm", 0, true}, {"only", 0, true}, {"furthest-site", 0, false},
 };
 
 int triangulate_file(const std::string& input, const Arguments& arguments) {
@@ -38,11 +39,16 @@ int triangulate_file(const std::string& input, const Arguments& arguments) {
   options.compute_neighbors = arguments.has("neighbors") || format != OutputFormat::Qhull;
   const bool only = arguments.has("only");
   const std::vector<std::int64_t> ids = only ? parse_only_ids(arguments.value_or("only", "")) : std::vector<std::int64_t>{};
+  const bool furthest = arguments.has("furthest-site");
+  if (furthest && (only || arguments.has("variant") || arguments.has("algorithm")))
+    throw UsageError("--furthest-site is built by insertion alone: it takes no --only, --variant or --algorithm");
 
   const PointCloud points = read_points(input);
   expect_svg_dimension(arguments, points.dim);
   options.progress = make_progress_reporter(points.size(), points.dim, quiet);
-  const Triangulation triangulation = only ? delaunay_stars(points, ids, options) : delaunay(points, options);
+  const Triangulation triangulation = furthest ? IncrementalDelaunay(points, true).triangulation(options.compute_neighbors)
+                                      : only   ? delaunay_stars(points, ids, options)
+                                               : delaunay(points, options);
 
   if (!triangulation.duplicates.empty() && !quiet)
     std::cerr << "drange: " << duplicates_message(triangulation.duplicates) << '\n';
@@ -89,6 +95,9 @@ std::string delaunay_help() {
              "                        input indices (3,17,42) or @FILE, a file of them; --neighbors\n"
              "                        then links the simplices written, -1 for any other; a\n"
              "                        duplicate's index gives the star of the point it copies\n"
+             "      --furthest-site   the furthest-site triangulation instead (Qhull's Qu): the\n"
+             "                        simplices whose circumspheres hold every point, of the\n"
+             "                        extreme points alone; by insertion, one thread\n"
              "      --svg FILE        also draw the triangulation (2D) as an SVG picture\n"
              "      --circles         draw the circumcircles too (with --svg)\n"
              "      --stats           print the run's statistics (key=value) to standard error\n"

@@ -1,5 +1,6 @@
 // tests/cli_only_test.cpp: `drange delaunay --only IDS`: the stars written equal the whole
 // triangulation's simplices at those points; every bad id is named, exits 2 and writes nothing.
+// And `--furthest-site`, which like --only writes another set of simplices than the default.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "drange/incremental.hpp"
 #include "drange/io.hpp"
 #include "temp_dir.hpp"
 
@@ -30,6 +32,16 @@ std::set<std::vector<std::int32_t>> vertex_sets(const std::string& path, int ver
     std::vector<std::int32_t> v(flat.begin() + static_cast<long>(i), flat.begin() + static_cast<long>(i) + vertices);
     std::sort(v.begin(), v.end());
     if (std::any_of(v.begin(), v.end(), [&](std::int32_t x) { return at.empty() || at.count(x) != 0; })) sets.insert(v);
+  }
+  return sets;
+}
+
+std::set<std::vector<std::int32_t>> vertex_sets_of(const Triangulation& t) {
+  std::set<std::vector<std::int32_t>> sets;
+  for (std::size_t s = 0; s < t.size(); ++s) {
+    std::vector<std::int32_t> v(t.simplex(s), t.simplex(s) + t.dim + 1);
+    std::sort(v.begin(), v.end());
+    sets.insert(v);
   }
   return sets;
 }
@@ -86,6 +98,20 @@ TEST(CliOnly, TheCentreOfASquareHasEveryTriangle) {
   EXPECT_EQ(read_simplices(dir.file("s.txt"), 3).size(), 12u);
   ASSERT_EQ(run_cli(dir, {"delaunay", dir.file("p.txt"), "--only", "0", "-o", dir.file("s.txt")}).code, 0);
   EXPECT_EQ(read_simplices(dir.file("s.txt"), 3).size(), 6u);  // the corner's two triangles
+}
+
+TEST(CliFurthestSite, WritesTheFurthestSiteTriangulation) {
+  testing::TempDir dir;
+  const std::string points = dir.file("p.txt");
+  ASSERT_EQ(testing::run_cli(dir, {"generate", "uniform", "300", "3", "-o", points}).code, 0);
+  const testing::CliRun run = testing::run_cli(dir, {"delaunay", points, "--furthest-site", "-o", dir.file("f.txt")});
+  ASSERT_EQ(run.code, 0) << run.err;
+  const PointCloud cloud = read_points(points);
+  const Triangulation expected = IncrementalDelaunay(cloud, true).triangulation();
+  EXPECT_EQ(vertex_sets(dir.file("f.txt"), 4, {}), vertex_sets_of(expected));
+  const testing::CliRun mixed = testing::run_cli(dir, {"delaunay", points, "--furthest-site", "--only", "3", "-o", dir.file("g.txt")});
+  EXPECT_EQ(mixed.code, 2);
+  EXPECT_TRUE(testing::contains(mixed.err, "--furthest-site")) << mixed.err;
 }
 
 }  // namespace
