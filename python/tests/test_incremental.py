@@ -167,3 +167,12 @@ def test_furthest_site_equations_point_out_of_the_lifted_hull():
     lifted = tri.lift_points(points)
     distances = lifted @ tri.equations[:, :-1].T + tri.equations[:, -1]
     assert (distances <= 1e-12).all()  # every point on or beneath every upper facet
+
+
+def test_furthest_site_pickles_and_copies():
+    points = np.random.default_rng(8).random((50, 3))
+    for original in (drange.Delaunay(points, furthest_site=True), drange.Voronoi(points, furthest_site=True)):
+        for other in (pickle.loads(pickle.dumps(original)), copy.deepcopy(original)):
+            assert other.furthest_site
+            assert np.array_equal(other.point_region if hasattr(other, "point_region") else other.simplices,
+                                  original.point_region if hasattr(original, "point_region") else original.simplices)
