@@ -2,13 +2,17 @@
 
 The names, arguments and calling conventions are scipy.interpolate's, so switching is one line::
 
-    from drange.interpolate import LinearNDInterpolator, NearestNDInterpolator, griddata
+    from drange.interpolate import (CloughTocher2DInterpolator, LinearNDInterpolator,
+                                    NearestNDInterpolator, griddata)
 
 LinearNDInterpolator locates each query with the exact `Delaunay.find_simplex` (all threads)
 and weights the values of the simplex's vertices by the query's barycentric coordinates.
+CloughTocher2DInterpolator (2D, in _clough_tocher.py) locates queries the same way and
+evaluates a piecewise cubic, C1 interpolant with gradients estimated as scipy's.
 """
 import numpy as np
 
+from ._clough_tocher import CloughTocher2DInterpolator, GradientEstimationWarning
 from ._delaunay import Delaunay
 from ._scattered import CHUNK_ELEMENTS, ScatteredInterpolator, barycentric
 
@@ -17,7 +21,8 @@ try:  # NearestNDInterpolator's search; a brute-force search stands in without s
 except ImportError:  # pragma: no cover - scipy is optional
     _cKDTree = None
 
-__all__ = ["LinearNDInterpolator", "NearestNDInterpolator", "griddata"]
+__all__ = ["CloughTocher2DInterpolator", "GradientEstimationWarning", "LinearNDInterpolator",
+           "NearestNDInterpolator", "griddata"]
 
 
 class LinearNDInterpolator(ScatteredInterpolator):
@@ -116,14 +121,13 @@ def _nearest_by_scan(points, xi):
 def griddata(points, values, xi, method="linear", fill_value=np.nan, rescale=False):
     """Interpolates scattered data at xi, as scipy.interpolate.griddata, in 2 or more dimensions.
 
-    method is 'linear' (LinearNDInterpolator) or 'nearest' (NearestNDInterpolator; fill_value
-    has no effect). 'cubic' (scipy's CloughTocher2DInterpolator, 2D only) is not implemented.
+    method is 'linear' (LinearNDInterpolator), 'nearest' (NearestNDInterpolator; fill_value
+    has no effect) or 'cubic' (CloughTocher2DInterpolator, 2D only).
     """
     if method == "nearest":
         return NearestNDInterpolator(points, values, rescale=rescale)(xi)
     if method == "linear":
         return LinearNDInterpolator(points, values, fill_value=fill_value, rescale=rescale)(xi)
     if method == "cubic":
-        raise NotImplementedError("griddata(method='cubic') (a Clough-Tocher interpolant, 2D only) is not "
-                                  "implemented in drange; use scipy.interpolate.griddata(..., method='cubic')")
-    raise ValueError(f"Unknown interpolation method {method!r}: use 'linear' or 'nearest'")
+        return CloughTocher2DInterpolator(points, values, fill_value=fill_value, rescale=rescale)(xi)
+    raise ValueError(f"Unknown interpolation method {method!r}: use 'linear', 'nearest' or 'cubic'")
