@@ -8,8 +8,8 @@ line::
 
 (and ConvexHull, HalfspaceIntersection.)
 
-drange.interpolate has scipy.interpolate's LinearNDInterpolator, NearestNDInterpolator and
-griddata over the exact triangulation.
+drange.interpolate has scipy.interpolate's LinearNDInterpolator, CloughTocher2DInterpolator,
+NearestNDInterpolator and griddata over the exact triangulation.
 
 Every decision is exact (no joggling, no tolerance): integer grids, cospherical points and
 duplicates give one well-defined triangulation, the same for any input order.
