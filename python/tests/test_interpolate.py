@@ -105,15 +105,17 @@ def test_calling_conventions_give_scipys_shapes_and_values(cls, name, arguments)
     np.testing.assert_allclose(ours, theirs, rtol=1e-12)
 
 
-def test_a_delaunay_passed_in_is_used_as_is():
-    points = sample("uniform", 500, 3, seed=12)
+@pytest.mark.parametrize("name,ndim", [("LinearNDInterpolator", 3), ("CloughTocher2DInterpolator", 2)])
+def test_a_delaunay_passed_in_is_used_as_is(name, ndim):
+    cls = getattr(interpolate, name)
+    points = sample("uniform", 500, ndim, seed=12)
     tri = drange.Delaunay(points)
-    values, xi = smooth(points), queries(1000, 3, seed=13)
-    ip = interpolate.LinearNDInterpolator(tri, values)
+    values, xi = smooth(points), queries(1000, ndim, seed=13)
+    ip = cls(tri, values)
     assert ip.tri is tri
-    np.testing.assert_array_equal(ip(xi), interpolate.LinearNDInterpolator(points, values)(xi))
+    np.testing.assert_array_equal(ip(xi), cls(points, values)(xi))
     with pytest.raises(ValueError, match="Rescaling is not supported"):
-        interpolate.LinearNDInterpolator(tri, values, rescale=True)
+        cls(tri, values, rescale=True)
 
 
 def test_a_scipy_delaunay_passed_in_is_used_too():

@@ -95,17 +95,6 @@ def test_the_sweeps_are_gauss_seidel_in_index_order(order):
     assert_gradients_match(ours, theirs)
 
 
-def test_a_delaunay_passed_in_is_used_as_is():
-    points = sample("uniform", 500, 2, seed=8)
-    tri = drange.Delaunay(points)
-    values, xi = smooth(points), queries(1000, seed=9)
-    ip = interpolate.CloughTocher2DInterpolator(tri, values)
-    assert ip.tri is tri
-    np.testing.assert_array_equal(ip(xi), interpolate.CloughTocher2DInterpolator(points, values)(xi))
-    with pytest.raises(ValueError, match="Rescaling is not supported"):
-        interpolate.CloughTocher2DInterpolator(tri, values, rescale=True)
-
-
 def test_a_scipy_delaunay_passed_in_is_used_too():
     points = sample("uniform", 300, 2, seed=10)
     values, xi = smooth(points), queries(500, seed=11)
