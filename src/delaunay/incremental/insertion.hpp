@@ -70,11 +70,7 @@ class Insertion {
   // of the points before, where the walk ends in a finite cell that holds it, and its lift is
   // beneath every cell's).
   bool insert(std::int32_t q) {
-    if (stamp_ > kLastStamp) {
-      cells_.clear_marks();
-      stamp_ = 0;
-    }
-    stamp_ += 4;
+    next_stamp();
     const std::int32_t start = locate(q);
     if (furthest_site_ && cells_.infinite_position(start) < 0) return false;
     find_conflicts(q, start);
@@ -86,11 +82,7 @@ class Insertion {
   // changes nothing: conflicts() and boundary() then hold them until the next call. q must be
   // no vertex (a copy of none). Not for the furthest site.
   void probe(std::int32_t q) {
-    if (stamp_ > kLastStamp) {
-      cells_.clear_marks();
-      stamp_ = 0;
-    }
-    stamp_ += 4;
+    next_stamp();
     find_conflicts(q, locate(q));
   }
   const std::vector<std::int32_t>& conflicts() const { return conflicts_; }
@@ -109,6 +101,13 @@ class Insertion {
   std::int32_t conflict_mark() const { return stamp_ + 1; }
   std::int32_t outside_mark() const { return stamp_ + 2; }
   std::int32_t new_mark() const { return stamp_ + 3; }
+  void next_stamp() {
+    if (stamp_ > kLastStamp) {
+      cells_.clear_marks();
+      stamp_ = 0;
+    }
+    stamp_ += 4;
+  }
 
   // A cell in conflict with q: the finite cell whose closed simplex holds q (every point of a
   // closed simplex but its vertices is strictly inside its circumsphere), or the infinite cell
