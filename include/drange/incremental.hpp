@@ -47,7 +47,8 @@ class IncrementalDelaunay {
   // convex hull of the points or on its boundary, where x's cell is unbounded, has none; one
   // equal to a point has that point (the first with its coordinates) with weight 1. The cells'
   // combinatorics are exact (the perturbed triangulation and x's conflicts in it); the volumes
-  // are those of the convex hulls of their vertices, the circumcentres, in floating point.
+  // are computed in floating point, from the flag parts of the simplices x's insertion would
+  // remove and create (extended precision near flat faces).
   // Throws UsageError for the furthest-site triangulation, InputError for a query of the wrong
   // dimension or with a NaN or infinite coordinate (naming it).
   struct NaturalNeighbours {
