@@ -106,6 +106,14 @@ void expect_stars_family(const PointCloud& points, const std::string& what, std:
   expect_stars(points, full, {static_cast<std::int64_t>(n / 2)}, what + " single middle");
   expect_stars(points, full, some_ids(n, 12, seed), what + " 12 ids");
   expect_stars(points, full, some_ids(n, n, seed + 1), what + " every id");
+  // A region: the points left of the middle of the first axis (one wrapping, many stars).
+  std::vector<double> first;
+  for (std::size_t i = 0; i < n; ++i) first.push_back(points.point(i)[0]);
+  std::nth_element(first.begin(), first.begin() + static_cast<std::ptrdiff_t>(n / 2), first.end());
+  Ids left;
+  for (std::size_t i = 0; i < n; ++i)
+    if (points.point(i)[0] < first[n / 2]) left.push_back(static_cast<std::int64_t>(i));
+  expect_stars(points, full, left, what + " left half");
 }
 
 // Integer points exactly on the sphere |x|^2 = r2 (many cospherical subsets, every one a tie).

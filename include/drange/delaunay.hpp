@@ -132,10 +132,10 @@ Triangulation delaunay(PointsView points, const Options& options = {});
 
 // The stars of the points `ids` (zero-based input indices): every simplex of delaunay(points)
 // incident to one of them, each once, and no other, found without the rest of the
-// triangulation (a walk to each point, then a wrapping of its facets alone: the cost after
-// reading and the kd-tree grows with the stars, not with the input). The same simplices as in
-// the full triangulation, as vertex sets; each positively oriented, in the order found (the
-// stars one after the other, in the order of `ids`, a simplex shared by two stars listed once).
+// triangulation (a walk to the points, taken in the kd-tree's order, then a wrapping of the
+// facets through them alone: the cost after reading and the kd-tree grows with the stars, not
+// with the input, whether they are few or most of it). The same simplices as in the full
+// triangulation, as vertex sets; each positively oriented, once, in the order found.
 // `neighbors` (Options::compute_neighbors) links the returned simplices among themselves: -1
 // where the neighbour is on the hull or is not returned. An exact duplicate's id gives the star
 // of the point it copies (the duplicate itself is in no simplex; Triangulation::duplicates

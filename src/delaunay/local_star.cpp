@@ -1,11 +1,9 @@
-// delaunay/local_star.cpp: the star of one point by a walk and a wrapping restricted to it
+// delaunay/local_star.cpp: the stars of given points by walks and a wrapping restricted to them
 // (local_star.hpp says why each step is exact).
 #include "delaunay/local_star.hpp"
 
 #include <algorithm>
-#include <deque>
 #include <string>
-#include <unordered_map>
 #include <utility>
 
 #include "delaunay/facet_table.hpp"
@@ -15,15 +13,6 @@
 #include "geometry/predicates.hpp"
 
 namespace drange::engine {
-namespace {
-
-struct KeyHash {
-  std::size_t operator()(const std::vector<std::int32_t>& ids) const {
-    return facet_hash(ids.data(), static_cast<int>(ids.size()));
-  }
-};
-
-}  // namespace
 
 StarWrapper::StarWrapper(const PointStore& points, FacetSearch& search, const FirstFacet& first)
     : points_(points),
@@ -81,46 +70,57 @@ void StarWrapper::walk_to(std::int32_t p, SearchCounters& counters) {
   throw InternalError("delaunay stars: the walk to point " + std::to_string(p) + " does not end");
 }
 
-void StarWrapper::star(std::int32_t p, std::vector<std::int32_t>& rows, SearchCounters& counters,
-                       std::vector<std::int32_t>& hull_facets) {
-  walk_to(p, counters);
+void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std::int32_t>& rows,
+                        SearchCounters& counters, std::vector<std::int32_t>& hull_facets) {
   const auto d = static_cast<std::size_t>(d_);
-  // The star's facets through p: true while open (one side's simplex found, the other's not).
-  std::unordered_map<std::vector<std::int32_t>, bool, KeyHash> open;
-  std::deque<std::pair<std::vector<std::int32_t>, int>> queue;
+  std::vector<char> is_wanted(static_cast<std::size_t>(points_.size), 0), covered(is_wanted.size(), 0);
+  for (const std::int32_t p : wanted) is_wanted[static_cast<std::size_t>(p)] = 1;
+  // The stars' open facets through a wanted point (found on one side, not yet on the other),
+  // and the queue of those to search: d sorted ids and the open side per entry. One table for
+  // every start: a facet through a wanted point is reached from both sides within one wrapping.
+  FacetTable open(d_);
+  std::vector<std::int32_t> queue;
+  std::size_t head = 0;
   std::vector<std::int32_t> vertices(d + 1);
-  // Records a simplex of the star; `searched`: the facet it was found from, closed already.
+  // Records a simplex; `searched`: the facet it was found from, closed already.
   const auto record = [&](const FoundSimplex& s, bool searched) {
     vertices_of(s, vertices.data());
     rows.insert(rows.end(), vertices.begin(), vertices.end());
+    for (const std::int32_t v : vertices) covered[static_cast<std::size_t>(v)] = 1;
     facets_of(s);
     for (std::size_t f = 0; f <= d; ++f) {
-      if (vertices[f] == p || (searched && f == d)) continue;  // the facet opposite p leaves the star
-      std::vector<std::int32_t> key(facets_.begin() + static_cast<std::ptrdiff_t>(f * d),
-                                    facets_.begin() + static_cast<std::ptrdiff_t>((f + 1) * d));
-      const auto [it, inserted] = open.emplace(key, true);
-      if (inserted) {
-        queue.emplace_back(std::move(key), sides_[f]);
-      } else if (it->second) {
-        it->second = false;  // the simplex on its other side is found: no search needed
-      } else {
-        throw InternalError("delaunay stars: a facet of the star of point " + std::to_string(p) + " has three simplices");
-      }
+      if (searched && f == d) continue;
+      const std::int32_t* facet = &facets_[f * d];
+      if (std::none_of(facet, facet + d, [&](std::int32_t v) { return is_wanted[static_cast<std::size_t>(v)] != 0; }))
+        continue;  // it leads out of the stars
+      FacetOwner other{};
+      if (open.close_or_open(facet, facet_hash(facet, d_), FacetOwner{0, 0}, &other)) continue;  // both sides found
+      queue.insert(queue.end(), facet, facet + d);
+      queue.push_back(sides_[f]);
     }
   };
-  record(current_, false);
-  while (!queue.empty()) {
-    auto [facet, side] = std::move(queue.front());
-    queue.pop_front();
-    bool& is_open = open[facet];
-    if (!is_open) continue;
-    is_open = false;
-    const std::int32_t apex = search_.find_apex(facet.data(), side, counters);
-    if (apex < 0) {
-      hull_facets.insert(hull_facets.end(), facet.begin(), facet.end());
-      continue;
+  std::vector<std::int32_t> order(wanted);
+  std::sort(order.begin(), order.end());
+  for (const std::int32_t p : order) {
+    if (covered[static_cast<std::size_t>(p)]) continue;
+    walk_to(p, counters);
+    record(current_, false);
+    while (head < queue.size()) {
+      std::vector<std::int32_t> facet(queue.begin() + static_cast<std::ptrdiff_t>(head),
+                                      queue.begin() + static_cast<std::ptrdiff_t>(head + d));
+      const int side = queue[head + d];
+      head += d + 1;
+      // Closed meanwhile (its other simplex found from another facet): nothing to search.
+      if (!open.remove(facet.data(), facet_hash(facet.data(), d_))) continue;
+      const std::int32_t apex = search_.find_apex(facet.data(), side, counters);
+      if (apex < 0) {
+        hull_facets.insert(hull_facets.end(), facet.begin(), facet.end());
+        continue;
+      }
+      record(FoundSimplex{std::move(facet), side, apex}, true);
     }
-    record(FoundSimplex{std::move(facet), side, apex}, true);
+    queue.clear();
+    head = 0;
   }
 }
 

@@ -11,9 +11,11 @@
 //      so such a facet exists until p is reached; the walk cannot cycle, because the
 //      triangulation under the perturbation is a regular one (Edelsbrunner's acyclicity
 //      theorem for the in-front relation seen from any point);
-//   3. the paper's wrapping (step 3), restricted to the star: each simplex found opens its d
-//      facets through p (the facet opposite p leads out of the star and is ignored), closes
-//      those already open, and each open facet is searched once.
+//   3. the paper's wrapping (step 3), restricted to the stars: each simplex found opens its
+//      facets through a wanted point (a facet through none leads out of the stars and is
+//      ignored), closes those already open, and each open facet is searched once. The stars of
+//      wanted points joined by Delaunay edges are wrapped in one go; a wanted point that no
+//      simplex found so far has is walked to, and wrapping starts again from there.
 // Every simplex is one that the full construction finds: find_apex is exact and decides by the
 // same perturbation, so the star is exactly the full triangulation's, vertex set for vertex set.
 #pragma once
@@ -43,10 +45,12 @@ class StarWrapper {
   StarWrapper(const PointStore& points, FacetSearch& search, const FirstFacet& first);
 
   // Appends to `rows` (d+1 engine ids per simplex, positively oriented) every simplex of the
-  // star of point `p` (an engine id), each once, in the order the wrapping finds them.
-  // Counts into `counters` the search's work and into `hull_facets` the star's facets on the
-  // hull. The walk to the next point starts from a simplex of this star.
-  void star(std::int32_t p, std::vector<std::int32_t>& rows, SearchCounters& counters, std::vector<std::int32_t>& hull_facets);
+  // stars of the points `wanted` (engine ids, distinct), each once, in the order the wrapping
+  // finds them, the points taken in increasing id order (the kd-tree's, so that the walks
+  // between them are short). Counts into `counters` the search's work and into `hull_facets`
+  // the stars' facets on the hull. The cost is that of the simplices found and the walks.
+  void stars(const std::vector<std::int32_t>& wanted, std::vector<std::int32_t>& rows, SearchCounters& counters,
+             std::vector<std::int32_t>& hull_facets);
 
  private:
   void walk_to(std::int32_t p, SearchCounters& counters);

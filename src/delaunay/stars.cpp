@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -36,22 +35,31 @@ void check_ids(const std::vector<std::int64_t>& ids, std::size_t n) {
   if (twice != sorted.end()) throw UsageError("point id " + std::to_string(*twice) + " is given twice");
 }
 
-// Neighbour k of row s: the returned row sharing the facet opposite vertex k, else -1.
+// Neighbour k of row s: the returned row sharing the facet opposite vertex k, else -1. The
+// facets (sorted ids) are sorted, so that the two sides of a shared one are adjacent.
 std::vector<std::int32_t> neighbours_among(const std::vector<std::int32_t>& rows, int d) {
-  const auto width = static_cast<std::size_t>(d + 1);
+  const auto width = static_cast<std::size_t>(d + 1), facet_width = static_cast<std::size_t>(d);
   std::vector<std::int32_t> neighbors(rows.size(), -1);
-  std::map<std::vector<std::int32_t>, std::size_t> seen;  // facet -> row * width + k
-  std::vector<std::int32_t> facet;
+  std::vector<std::int32_t> facets(rows.size() * facet_width);  // facet `at` = row at / width without vertex at % width
   for (std::size_t at = 0; at < rows.size(); ++at) {
     const std::size_t row = at / width, k = at % width;
-    facet.clear();
-    for (std::size_t i = 0; i < width; ++i)
-      if (i != k) facet.push_back(rows[row * width + i]);
-    std::sort(facet.begin(), facet.end());
-    const auto [it, inserted] = seen.emplace(facet, at);
-    if (inserted) continue;
-    neighbors[at] = static_cast<std::int32_t>(it->second / width);
-    neighbors[it->second] = static_cast<std::int32_t>(row);
+    std::int32_t* facet = &facets[at * facet_width];
+    for (std::size_t i = 0, j = 0; i < width; ++i)
+      if (i != k) facet[j++] = rows[row * width + i];
+    std::sort(facet, facet + facet_width);
+  }
+  std::vector<std::size_t> order(rows.size());
+  for (std::size_t at = 0; at < order.size(); ++at) order[at] = at;
+  const auto facet = [&](std::size_t at) { return facets.begin() + static_cast<std::ptrdiff_t>(at * facet_width); };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::lexicographical_compare(facet(a), facet(a) + static_cast<std::ptrdiff_t>(facet_width), facet(b),
+                                        facet(b) + static_cast<std::ptrdiff_t>(facet_width));
+  });
+  for (std::size_t i = 0; i + 1 < order.size(); ++i) {
+    const std::size_t a = order[i], b = order[i + 1];
+    if (!std::equal(facet(a), facet(a) + static_cast<std::ptrdiff_t>(facet_width), facet(b))) continue;
+    neighbors[a] = static_cast<std::int32_t>(b / width);
+    neighbors[b] = static_cast<std::int32_t>(a / width);
   }
   return neighbors;
 }
@@ -94,19 +102,10 @@ Triangulation delaunay_stars(PointsView input, const std::vector<std::int64_t>& 
   engine::FacetSearch search(points, search_options);
   engine::StarWrapper wrapper(points, search, first);
   engine::SearchCounters counters;
-  std::vector<std::int32_t> star, hull, rows;
-  std::set<std::vector<std::int32_t>> kept, hull_facets;  // sorted vertex sets, sorted facets
-  const auto width = static_cast<std::size_t>(d + 1);
-  std::vector<std::int32_t> key;
-  for (const std::int64_t id : ids) {
-    star.clear();
-    wrapper.star(engine_id[static_cast<std::size_t>(id)], star, counters, hull);
-    for (std::size_t s = 0; s < star.size(); s += width) {
-      key.assign(star.begin() + static_cast<std::ptrdiff_t>(s), star.begin() + static_cast<std::ptrdiff_t>(s + width));
-      std::sort(key.begin(), key.end());
-      if (kept.insert(key).second) rows.insert(rows.end(), star.begin() + static_cast<std::ptrdiff_t>(s), star.begin() + static_cast<std::ptrdiff_t>(s + width));
-    }
-  }
+  std::vector<std::int32_t> wanted, hull, rows;
+  for (const std::int64_t id : ids) wanted.push_back(engine_id[static_cast<std::size_t>(id)]);
+  wrapper.stars(wanted, rows, counters, hull);
+  std::set<std::vector<std::int32_t>> hull_facets;  // sorted facets
   for (std::size_t f = 0; f < hull.size(); f += static_cast<std::size_t>(d))
     hull_facets.emplace(hull.begin() + static_cast<std::ptrdiff_t>(f), hull.begin() + static_cast<std::ptrdiff_t>(f) + d);
   for (std::int32_t& v : rows) v = points.input_index[static_cast<std::size_t>(v)];
