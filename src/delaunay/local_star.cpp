@@ -3,6 +3,8 @@
 #include "delaunay/local_star.hpp"
 
 #include <algorithm>
+#include <functional>
+#include <queue>
 #include <string>
 #include <utility>
 
@@ -79,8 +81,11 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
   // and the queue of those to search: d sorted ids and the open side per entry. One table for
   // every start: a facet through a wanted point is reached from both sides within one wrapping.
   FacetTable open(d_);
-  std::vector<std::int32_t> queue;
-  std::size_t head = 0;
+  std::vector<std::int32_t> queue;  // the entries, in the order pushed
+  // The entries to search next, least smallest vertex id first (the full search's spatial
+  // order: ids follow the kd-tree, so consecutive searches read nearby nodes).
+  std::priority_queue<std::pair<std::int32_t, std::size_t>, std::vector<std::pair<std::int32_t, std::size_t>>,
+                      std::greater<>> next;
   std::vector<std::int32_t> vertices(d + 1);
   // Records a simplex; `searched`: the facet it was found from, closed already.
   const auto record = [&](const FoundSimplex& s, bool searched) {
@@ -95,6 +100,7 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
         continue;  // it leads out of the stars
       FacetOwner other{};
       if (open.close_or_open(facet, facet_hash(facet, d_), FacetOwner{0, 0}, &other)) continue;  // both sides found
+      next.emplace(facet[0], queue.size());
       queue.insert(queue.end(), facet, facet + d);
       queue.push_back(sides_[f]);
     }
@@ -105,11 +111,12 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
     if (covered[static_cast<std::size_t>(p)]) continue;
     walk_to(p, counters);
     record(current_, false);
-    while (head < queue.size()) {
+    while (!next.empty()) {
+      const std::size_t head = next.top().second;
+      next.pop();
       std::vector<std::int32_t> facet(queue.begin() + static_cast<std::ptrdiff_t>(head),
                                       queue.begin() + static_cast<std::ptrdiff_t>(head + d));
       const int side = queue[head + d];
-      head += d + 1;
       // Closed meanwhile (its other simplex found from another facet): nothing to search.
       if (!open.remove(facet.data(), facet_hash(facet.data(), d_))) continue;
       const std::int32_t apex = search_.find_apex(facet.data(), side, counters);
@@ -120,7 +127,6 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
       record(FoundSimplex{std::move(facet), side, apex}, true);
     }
     queue.clear();
-    head = 0;
   }
 }
 
