@@ -93,6 +93,21 @@ struct Diagram {
   Statistics statistics;
 };
 
+// drange::IncrementalDelaunay for Python: each call runs without the GIL, so that other Python
+// threads go on, and under the object's lock, so that no two change it at once (the GIL is let
+// go before the lock is taken: a thread waiting for the lock never holds the GIL).
+struct IncrementalState {
+  std::unique_ptr<IncrementalDelaunay> engine;
+  std::mutex lock;
+
+  template <class Work>
+  void run(Work&& work) {
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> guard(lock);
+    work(*engine);
+  }
+};
+
 // A property getter: the diagram's vector `member` as a 1-D view.
 template <class T>
 auto diagram_array(std::vector<T> Voronoi::*member) {
@@ -270,35 +285,44 @@ PYBIND11_MODULE(_drange, m) {
   }, py::arg("points"), py::arg("ids"), py::arg("variant"), py::arg("threads"), py::arg("cell_volumes"));
 
   // The incremental triangulation: the caller (drange.Delaunay, drange.Voronoi) keeps the
-  // array of every point added and passes it to each result, which views it. Calls hold the
-  // GIL: the object changes, and two Python threads must not change it at once.
-  py::class_<IncrementalDelaunay>(m, "IncrementalDelaunay")
+  // array of every point added and passes it to each result, which views it.
+  py::class_<IncrementalState>(m, "IncrementalDelaunay")
       .def(py::init([](const Points& points, bool furthest_site) {
-        return std::make_unique<IncrementalDelaunay>(points_view(points, "points"), furthest_site);
+        const PointsView input = points_view(points, "points");
+        auto state = std::make_unique<IncrementalState>();
+        py::gil_scoped_release release;
+        state->engine = std::make_unique<IncrementalDelaunay>(input, furthest_site);
+        return state;
       }), py::arg("points"), py::arg("furthest_site") = false)
-      .def("add_points", [](IncrementalDelaunay& t, const Points& points) {
-        t.add_points(points_view(points, "points"));
+      .def("add_points", [](IncrementalState& t, const Points& points) {
+        const PointsView input = points_view(points, "points");
+        t.run([&](IncrementalDelaunay& engine) { engine.add_points(input); });
       }, py::arg("points"))
-      .def("natural_neighbours", [](IncrementalDelaunay& t, const Points& queries) {
-        IncrementalDelaunay::NaturalNeighbours found = t.natural_neighbours(points_view(queries, "xi"));
+      .def("natural_neighbours", [](IncrementalState& t, const Points& queries) {
+        const PointsView input = points_view(queries, "xi");
+        IncrementalDelaunay::NaturalNeighbours found;
+        t.run([&](IncrementalDelaunay& engine) { found = engine.natural_neighbours(input); });
         std::vector<std::int64_t> offsets(found.offsets.begin(), found.offsets.end());
         const auto count = static_cast<py::ssize_t>(found.ids.size());
         return py::make_tuple(adopt(std::move(offsets), {static_cast<py::ssize_t>(found.offsets.size())}),
                               adopt(std::move(found.ids), {count}), adopt(std::move(found.weights), {count}));
       }, py::arg("queries"))
-      .def("triangulated", [](const IncrementalDelaunay& t, Points all_points) {
+      .def("triangulated", [](IncrementalState& t, Points all_points) {
         auto triangulated = std::make_unique<Triangulated>();
-        triangulated->result = t.triangulation();
+        t.run([&](IncrementalDelaunay& engine) { triangulated->result = engine.triangulation(); });
         triangulated->points = std::move(all_points);
         return triangulated;
       }, py::arg("all_points"))
-      .def("diagram", [](const IncrementalDelaunay& t, Points all_points, bool cell_volumes) {
+      .def("diagram", [](IncrementalState& t, Points all_points, bool cell_volumes) {
+        const PointsView input = points_view(all_points, "points");
         VoronoiOptions options;
         options.cell_volumes = cell_volumes;
         auto diagram = std::make_unique<Diagram>();
-        const Triangulation triangulation = t.triangulation();
-        diagram->statistics = triangulation.stats;
-        diagram->result = voronoi(points_view(all_points, "points"), triangulation, options);
+        t.run([&](IncrementalDelaunay& engine) {
+          const Triangulation triangulation = engine.triangulation();
+          diagram->statistics = triangulation.stats;
+          diagram->result = voronoi(input, triangulation, options);
+        });
         diagram->points = std::move(all_points);
         return diagram;
       }, py::arg("all_points"), py::arg("cell_volumes"));

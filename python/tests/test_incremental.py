@@ -176,3 +176,21 @@ def test_furthest_site_pickles_and_copies():
             assert other.furthest_site
             assert np.array_equal(other.point_region if hasattr(other, "point_region") else other.simplices,
                                   original.point_region if hasattr(original, "point_region") else original.simplices)
+
+
+def test_threads_share_an_object_safely():
+    # The engine runs without the GIL under the object's lock: calls from several Python
+    # threads on one interpolant, and adds to several objects at once, give the serial answers.
+    from concurrent.futures import ThreadPoolExecutor
+    from drange.interpolate import NaturalNeighborInterpolator
+    rng = np.random.default_rng(11)
+    points, queries = rng.random((3000, 2)), 0.2 + 0.6 * rng.random((8, 200, 2))
+    interpolant = NaturalNeighborInterpolator(points, points[:, 0] * points[:, 1])
+    serial = [interpolant(q) for q in queries]
+    with ThreadPoolExecutor(4) as pool:
+        assert all(np.array_equal(a, b) for a, b in zip(pool.map(interpolant, queries), serial))
+        grown = list(pool.map(lambda seed: grow(drange.Delaunay, np.random.default_rng(seed).random((400, 3)), 50, 30),
+                              range(4)))
+    for seed, tri in enumerate(grown):
+        fresh = drange.Delaunay(np.random.default_rng(seed).random((400, 3)))
+        assert simplex_set(tri.simplices) == simplex_set(fresh.simplices)
