@@ -208,3 +208,39 @@ TEST(LocalStars, BadIdsAreNamed) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(DelaunayBlocks, EverySimplexInExactlyOneBlock) {
+  const std::vector<std::pair<std::string, PointCloud>> cases = {
+      {"uniform 2D", drange::generate_points(Distribution::Uniform, 3000, 2, 3)},
+      {"clustered 3D", drange::generate_points(Distribution::Clustered, 2000, 3, 4)},
+      {"grid 3D", drange::test::checks::grid(3, 7)},
+      {"sphere 3D", drange::generate_points(Distribution::Sphere, 800, 3, 5)},
+      {"uniform 4D", drange::generate_points(Distribution::Uniform, 400, 4, 6)},
+  };
+  for (const auto& [name, points] : cases) {
+    const Triangulation full = drange::delaunay(points);
+    const std::vector<VertexSet> whole = drange::test::checks::canonical(full);
+    for (const int blocks : {1, 2, 3, 7}) {
+      Triangulation joined;
+      joined.dim = points.dim;
+      joined.num_points = points.size();
+      for (int b = 0; b < blocks; ++b) {
+        const Triangulation part = drange::delaunay_block(points, b, blocks);
+        EXPECT_TRUE(part.neighbors.empty());
+        joined.simplices.insert(joined.simplices.end(), part.simplices.begin(), part.simplices.end());
+      }
+      // Sorted with repeats kept: a simplex in two blocks would show twice.
+      EXPECT_EQ(drange::test::checks::canonical(joined), whole) << name << " blocks=" << blocks;
+      drange::link_neighbours(joined);
+      joined.stats.hull_facets = full.stats.hull_facets;  // the -1 neighbours must be as many
+      drange::test::checks::expect_consistent_adjacency(points, joined);
+    }
+  }
+  const PointCloud points = drange::generate_points(Distribution::Uniform, 50, 2, 1);
+  EXPECT_THROW(drange::delaunay_block(points, 2, 2), drange::UsageError);
+  EXPECT_THROW(drange::delaunay_block(points, 0, 0), drange::UsageError);
+}
+
+}  // namespace

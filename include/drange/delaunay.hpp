@@ -146,4 +146,20 @@ Triangulation delaunay(PointsView points, const Options& options = {});
 // out of range or given twice, and whatever delaunay() throws for the points.
 Triangulation delaunay_stars(PointsView points, const std::vector<std::int64_t>& ids, const Options& options = {});
 
+// One block of delaunay(points), for a computation split among `blocks` processes: the points
+// are numbered in drange's own order (the kd-tree's, spatially coherent) and cut into `blocks`
+// ranges of equal size; block `block` has every simplex whose smallest vertex in that order is
+// in its range, found by wrapping the stars of its points (as delaunay_stars). Over the blocks
+// every simplex of delaunay(points) comes exactly once, as the same vertex set, positively
+// oriented. No neighbours (the blocks' union has them: the simplices sharing a facet).
+// Statistics: points and distinct_points of the whole input, simplices of this block, the
+// block's times and search work. Throws UsageError for a block outside 0..blocks-1, and what
+// delaunay() throws for the points.
+Triangulation delaunay_block(PointsView points, int block, int blocks, const Options& options = {});
+
+// Fills t.neighbors from t.simplices alone: neighbour k of simplex s is the simplex that shares
+// the facet opposite its vertex k, -1 where none does (for the union of delaunay_block's blocks:
+// delaunay()'s neighbours, in that union's numbering).
+void link_neighbours(Triangulation& t);
+
 }  // namespace drange
