@@ -15,6 +15,7 @@
 #include "drange/svg.hpp"
 #include "exit_codes.hpp"
 #include "only_ids.hpp"
+#include "processes.hpp"
 #include "progress.hpp"
 
 namespace drange::cli {
@@ -43,6 +44,7 @@ int triangulate_file(const std::string& input, const Arguments& arguments) {
   if (furthest && (only || arguments.has("variant") || arguments.has("algorithm")))
     throw UsageError("--furthest-site is built by insertion alone: it takes no --only, --variant or --algorithm");
 
+  if (processes().count() > 1) return triangulate_across_processes(input, arguments, output, format, options);
   const PointCloud points = read_points(input);
   expect_svg_dimension(arguments, points.dim);
   options.progress = make_progress_reporter(points.size(), points.dim, quiet);
@@ -135,6 +137,11 @@ std::string delaunay_help() {
          "the hull surface (3D). Files are replaced only when complete: a failed run leaves an\n"
          "existing file untouched. Long runs draw a progress line on standard error when it is\n"
          "a terminal.\n"
+         "\n"
+         "Across processes: mpirun -np P drange delaunay POINTS -o OUT splits the work among P\n"
+         "processes (when drange is built with MPI) and writes the same simplices once; see\n"
+         "docs/scaling.md. --only, --furthest-site, --svg, --variant and --algorithm run as one\n"
+         "process only.\n"
          "\n"
          "Examples:\n"
          "  drange generate uniform 100000 3 -o points.txt\n"

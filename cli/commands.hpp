@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "args.hpp"
+#include "drange/delaunay.hpp"
+#include "drange/formats.hpp"
+
 namespace drange::cli {
 
 inline constexpr const char* kVersion = "0.1.0";
@@ -26,6 +30,10 @@ std::string general_help();
 
 // The exit codes paragraph shared by every help text.
 std::string exit_codes_help();
+
+// `drange delaunay INPUT` under mpirun with more than one process (command_delaunay_split.cpp).
+int triangulate_across_processes(const std::string& input, const Arguments& arguments, const std::string& output,
+                                 OutputFormat format, const Options& options);
 
 // Runs the built-in demonstration of `drange delaunay` without INPUT.
 int run_delaunay_demo(const std::string& variant, int threads, bool print_stats);

@@ -2,6 +2,9 @@
 // part of the command's interface (documented in `drange --help`); never renumber them.
 #pragma once
 
+#include <exception>
+#include <string>
+
 namespace drange::cli {
 
 enum ExitCode : int {
@@ -13,5 +16,9 @@ enum ExitCode : int {
   kExitOutOfMemory = 5,
   kExitInternal = 70,     // a bug: please report it (70 is EX_SOFTWARE in sysexits.h)
 };
+
+// The exit code of a failure (a library exception, bad_alloc, anything else: internal), and
+// its message on standard error when `print`; `command_name` for a usage error's hint.
+int report_failure(std::exception_ptr failure, const std::string& command_name, bool print);
 
 }  // namespace drange::cli

@@ -4,6 +4,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "commands.hpp"
 #include "drange/errors.hpp"
 #include "exit_codes.hpp"
+#include "processes.hpp"
 
 namespace drange::cli {
 namespace {
@@ -84,28 +86,47 @@ int dispatch(const std::vector<std::string>& args, std::string& command_name) {
 }
 
 }  // namespace
+
+int report_failure(std::exception_ptr failure, const std::string& command_name, bool print) {
+  std::ostringstream message;
+  int code = kExitInternal;
+  try {
+    std::rethrow_exception(failure);
+  } catch (const UsageError& e) {
+    message << "drange: " << e.what() << "\nTry 'drange " << (command_name.empty() ? "" : command_name + " ") << "--help'.\n";
+    code = kExitUsage;
+  } catch (const InputError& e) {
+    message << "drange: " << e.what() << '\n';
+    code = kExitInput;
+  } catch (const DegenerateInputError& e) {
+    message << "drange: " << e.what() << '\n';
+    code = kExitDegenerate;
+  } catch (const std::bad_alloc&) {
+    message << "drange: out of memory\n";
+    code = kExitOutOfMemory;
+  } catch (const std::exception& e) {
+    message << "drange: internal error: " << e.what() << '\n';
+  }
+  if (print) std::cerr << message.str();
+  return code;
+}
+
 }  // namespace drange::cli
 
 int main(int argc, char** argv) {
   using namespace drange::cli;
   std::string command_name;
+  // Under mpirun every process runs the same command line; the messages come from process 0.
+  bool speaks = launched_processes() <= 1;
   try {
-    return dispatch(std::vector<std::string>(argv + 1, argv + argc), command_name);
-  } catch (const drange::UsageError& e) {
-    std::cerr << "drange: " << e.what() << "\nTry 'drange " << (command_name.empty() ? "" : command_name + " ")
-              << "--help'.\n";
-    return kExitUsage;
-  } catch (const drange::InputError& e) {
-    std::cerr << "drange: " << e.what() << '\n';
-    return kExitInput;
-  } catch (const drange::DegenerateInputError& e) {
-    std::cerr << "drange: " << e.what() << '\n';
-    return kExitDegenerate;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "drange: out of memory\n";
-    return kExitOutOfMemory;
-  } catch (const std::exception& e) {
-    std::cerr << "drange: internal error: " << e.what() << '\n';
-    return kExitInternal;
+    const Processes processes(&argc, &argv);
+    speaks = processes.rank() == 0;
+    try {
+      return dispatch(std::vector<std::string>(argv + 1, argv + argc), command_name);
+    } catch (...) {
+      return report_failure(std::current_exception(), command_name, speaks);
+    }
+  } catch (...) {
+    return report_failure(std::current_exception(), command_name, speaks);
   }
 }

@@ -6,7 +6,7 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 packages=(g++ cmake make libgmp-dev libgtest-dev qhull-bin libcgal-dev libeigen3-dev libboost-dev
           python3-numpy python3-scipy librsvg2-bin python3-dev pybind11-dev python3-pytest python3-matplotlib
-          python3-pip python3-setuptools python3-wheel python3-venv)
+          python3-pip python3-setuptools python3-wheel python3-venv openmpi-bin libopenmpi-dev)
 
 source "$root/scripts/install_packages.sh"
 install_packages "drange setup" "${packages[@]}"

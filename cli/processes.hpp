@@ -1,0 +1,43 @@
+// cli/processes.hpp: the processes a run is split among. `mpirun -np P drange delaunay ...`
+// starts P of them; with MPI built in (CMake finds it) they join one MPI world, otherwise a
+// launch of more than one is refused. A plain `drange` run is one process and never touches MPI.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace drange::cli {
+
+class Processes {
+ public:
+  // Joins the launch's world when the environment says that mpirun started more than one
+  // process (OMPI_COMM_WORLD_SIZE, PMI_SIZE); throws UsageError then if MPI is not built in.
+  Processes(int* argc, char*** argv);
+  ~Processes();
+  Processes(const Processes&) = delete;
+  Processes& operator=(const Processes&) = delete;
+
+  int count() const { return count_; }
+  int rank() const { return rank_; }
+
+  // Every process calls these, in the same order.
+  // The largest `value` over the processes, on every process.
+  int max(int value) const;
+  // Process 0 gets every process's `values`, in rank order; the others an empty vector.
+  std::vector<std::int32_t> gather(const std::vector<std::int32_t>& values) const;
+  std::vector<double> gather(const std::vector<double>& values) const;
+
+ private:
+  int count_ = 1;
+  int rank_ = 0;
+  bool joined_ = false;
+};
+
+// The run's processes (main() makes them before any command runs).
+const Processes& processes();
+
+// The number of processes the environment says mpirun started (1 without mpirun).
+int launched_processes();
+
+}  // namespace drange::cli
