@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
   using namespace drange::cli;
   std::string command_name;
   // Under mpirun every process runs the same command line; the messages come from process 0.
-  bool speaks = launched_processes() <= 1;
+  bool speaks = launched_rank() == 0;
   try {
     const Processes processes(&argc, &argv);
     speaks = processes.rank() == 0;

@@ -1,7 +1,9 @@
 // cli/processes.cpp: see processes.hpp. The MPI calls are compiled in with DRANGE_HAVE_MPI.
 #include "processes.hpp"
 
+#include <algorithm>
 #include <cstdlib>
+#include <initializer_list>
 #include <string>
 
 #include "drange/errors.hpp"
@@ -17,13 +19,21 @@ const Processes* the_processes = nullptr;
 
 }  // namespace
 
-int launched_processes() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+namespace {
+
+int from_environment(std::initializer_list<const char*> names, int otherwise) {
+  for (const char* name : names) {
     const char* value = std::getenv(name);
-    if (value != nullptr && std::atoi(value) > 0) return std::atoi(value);
+    if (value != nullptr && std::atoi(value) >= 0 && *value != '\0') return std::atoi(value);
   }
-  return 1;
+  return otherwise;
 }
+
+}  // namespace
+
+int launched_processes() { return std::max(1, from_environment({"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}, 1)); }
+
+int launched_rank() { return from_environment({"OMPI_COMM_WORLD_RANK", "PMI_RANK"}, 0); }
 
 Processes::Processes(int* argc, char*** argv) {
   the_processes = this;

@@ -37,7 +37,9 @@ class Processes {
 // The run's processes (main() makes them before any command runs).
 const Processes& processes();
 
-// The number of processes the environment says mpirun started (1 without mpirun).
+// The number of processes the environment says mpirun started (1 without mpirun), and this
+// one's rank among them (0 without mpirun): known before, and without, MPI.
 int launched_processes();
+int launched_rank();
 
 }  // namespace drange::cli
