@@ -157,6 +157,8 @@ int run_delaunay(const std::vector<std::string>& args) {
   expect_positionals(arguments, {"INPUT"}, 0);
   // Without INPUT, points piped or redirected into standard input are read, as qdelaunay does
   // (`drange delaunay < points.txt`); a terminal or an empty stream gets the demonstration.
+  if (processes().count() > 1 && arguments.positionals.empty())
+    throw UsageError("across processes (mpirun) drange delaunay needs an INPUT file");
   if (arguments.positionals.empty() && standard_input_has_points()) return triangulate_file("-", arguments);
   if (arguments.positionals.empty()) {
     // The demonstration writes no files: an output option without INPUT is a mistake.

@@ -49,6 +49,7 @@ void print_stats(const Processes& group, const std::vector<double>& figures, std
 int triangulate_across_processes(const std::string& input, const Arguments& arguments, const std::string& output,
                                  OutputFormat format, const Options& options) {
   const Processes& group = processes();
+  if (input == "-") throw UsageError("across processes (mpirun) the input must be a file, not standard input");
   for (const char* option : {"only", "furthest-site", "svg", "variant", "algorithm"})
     if (arguments.has(option)) throw UsageError(std::string("--") + option + " does not run across processes (mpirun)");
   PointCloud points;

@@ -78,6 +78,8 @@ int dispatch(const std::vector<std::string>& args, std::string& command_name) {
   const Command* command = find_command(first);
   if (command == nullptr) unknown_command(first);
   command_name = command->name;
+  if (processes().count() > 1 && command_name != "delaunay")
+    throw UsageError("only drange delaunay runs across processes (mpirun); run drange " + command_name + " as one process");
   if (asks_for_help(rest)) {
     std::cout << command->help();
     return kExitSuccess;

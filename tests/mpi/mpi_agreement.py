@@ -75,10 +75,11 @@ def main():
         flat = os.path.join(tmp, "flat.txt")
         with open(flat, "w") as f:
             f.write("2\n4\n0 0\n1 1\n2 2\n3 3\n")
-        for path, extra, code, words in ((bad, [], 3, "not a number"), (flat, [], 4, "affine subspace"),
-                                         (flat, ["--only", "1"], 2, "--only")):
+        for command, code, words in ((["delaunay", bad], 3, "not a number"), (["delaunay", flat], 4, "affine subspace"),
+                                     (["delaunay", flat, "--only", "1"], 2, "--only"),
+                                     (["voronoi", flat], 2, "only drange delaunay")):
             out = os.path.join(tmp, "never.txt")
-            done = run(LAUNCH + ["-np", "3", DRANGE, "delaunay", path, "-o", out] + extra)
+            done = run(LAUNCH + ["-np", "3", DRANGE] + command + ["-o", out])
             messages = [line for line in done.stderr.splitlines() if line.startswith("drange:")]
             if done.returncode != code or len(messages) != 1 or words not in messages[0] or os.path.exists(out):
                 print(f"FAILED error case {words!r}: exit {done.returncode}, messages {messages}")
