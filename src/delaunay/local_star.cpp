@@ -3,11 +3,10 @@
 #include "delaunay/local_star.hpp"
 
 #include <algorithm>
-#include <functional>
-#include <queue>
 #include <string>
 #include <utility>
 
+#include "delaunay/facet_queue.hpp"
 #include "delaunay/facet_table.hpp"
 #include "delaunay/simplex_estimate.hpp"
 #include "delaunay/simplex_facets.hpp"
@@ -15,6 +14,12 @@
 #include "geometry/predicates.hpp"
 
 namespace drange::engine {
+namespace {
+
+// The spatial queue's keys: the smallest vertex id in blocks of 8, as the whole construction's.
+constexpr int kStarBlockShift = 3;
+
+}  // namespace
 
 StarWrapper::StarWrapper(const PointStore& points, FacetSearch& search, const FirstFacet& first)
     : points_(points),
@@ -78,15 +83,13 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
   std::vector<char> is_wanted(static_cast<std::size_t>(points_.size), 0), covered(is_wanted.size(), 0);
   for (const std::int32_t p : wanted) is_wanted[static_cast<std::size_t>(p)] = 1;
   // The stars' open facets through a wanted point (found on one side, not yet on the other),
-  // and the queue of those to search: d sorted ids and the open side per entry. One table for
-  // every start: a facet through a wanted point is reached from both sides within one wrapping.
+  // and the queue of those to search, least smallest vertex id first: the whole construction's
+  // spatial order (ids follow the kd-tree, so consecutive searches read nearby nodes). One
+  // table for every start: a facet through a wanted point is reached from both sides within
+  // one wrapping.
   FacetTable open(d_);
-  std::vector<std::int32_t> queue;  // the entries, in the order pushed
-  // The entries to search next, least smallest vertex id first (the full search's spatial
-  // order: ids follow the kd-tree, so consecutive searches read nearby nodes).
-  std::priority_queue<std::pair<std::int32_t, std::size_t>, std::vector<std::pair<std::int32_t, std::size_t>>,
-                      std::greater<>> next;
-  std::vector<std::int32_t> vertices(d + 1);
+  SpatialFacetQueue queue(d_, points_.size, kStarBlockShift);
+  std::vector<std::int32_t> vertices(d + 1), facet(d);
   // Records a simplex; `searched`: the facet it was found from, closed already.
   const auto record = [&](const FoundSimplex& s, bool searched) {
     vertices_of(s, vertices.data());
@@ -95,38 +98,33 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
     facets_of(s);
     for (std::size_t f = 0; f <= d; ++f) {
       if (searched && f == d) continue;
-      const std::int32_t* facet = &facets_[f * d];
-      if (std::none_of(facet, facet + d, [&](std::int32_t v) { return is_wanted[static_cast<std::size_t>(v)] != 0; }))
+      const std::int32_t* ids = &facets_[f * d];
+      if (std::none_of(ids, ids + d, [&](std::int32_t v) { return is_wanted[static_cast<std::size_t>(v)] != 0; }))
         continue;  // it leads out of the stars
+      const std::uint32_t hash = facet_hash(ids, d_);
       FacetOwner other{};
-      if (open.close_or_open(facet, facet_hash(facet, d_), FacetOwner{0, 0}, &other)) continue;  // both sides found
-      next.emplace(facet[0], queue.size());
-      queue.insert(queue.end(), facet, facet + d);
-      queue.push_back(sides_[f]);
+      if (open.close_or_open(ids, hash, FacetOwner{0, 0}, &other)) continue;  // both sides found
+      queue.push(ids, hash, FacetOwner{0, 0}, sides_[f], -1);
     }
   };
   std::vector<std::int32_t> order(wanted);
   std::sort(order.begin(), order.end());
+  FacetInfo info{};
   for (const std::int32_t p : order) {
     if (covered[static_cast<std::size_t>(p)]) continue;
     walk_to(p, counters);
     record(current_, false);
-    while (!next.empty()) {
-      const std::size_t head = next.top().second;
-      next.pop();
-      std::vector<std::int32_t> facet(queue.begin() + static_cast<std::ptrdiff_t>(head),
-                                      queue.begin() + static_cast<std::ptrdiff_t>(head + d));
-      const int side = queue[head + d];
+    while (!queue.empty()) {
+      queue.pop(facet.data(), info);
       // Closed meanwhile (its other simplex found from another facet): nothing to search.
-      if (!open.remove(facet.data(), facet_hash(facet.data(), d_))) continue;
-      const std::int32_t apex = search_.find_apex(facet.data(), side, counters);
+      if (!open.remove(facet.data(), info.hash)) continue;
+      const std::int32_t apex = search_.find_apex(facet.data(), info.sigma, counters);
       if (apex < 0) {
         hull_facets.insert(hull_facets.end(), facet.begin(), facet.end());
         continue;
       }
-      record(FoundSimplex{std::move(facet), side, apex}, true);
+      record(FoundSimplex{facet, info.sigma, apex}, true);
     }
-    queue.clear();
   }
 }
 
