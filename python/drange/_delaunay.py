@@ -40,7 +40,8 @@ class Delaunay(PointSetAttributes):
         Allow add_points: the triangulation is kept by insertion (the "incremental"
         algorithm, one thread; `variant` and `algorithm` are then not used), and each call
         removes the simplices whose circumspheres hold a new point and joins it to the cavity's
-        boundary, so that its cost follows the change. close() ends it.
+        boundary: the triangulation's update follows the change, and the result arrays are
+        then exported again (linear in their size). close() ends it.
     threads : int, keyword only
         Threads for the search and for find_simplex; 0 (default) uses all cores.
     variant : str, keyword only

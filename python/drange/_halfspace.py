@@ -166,7 +166,12 @@ class HalfspaceIntersection:
                              f"got shape {added.shape}")
         if not np.isfinite(added).all():
             raise ValueError("halfspaces must be finite (no NaN or infinity)")
-        self._build(np.ascontiguousarray(np.concatenate([self.halfspaces, added])))
+        before = self.halfspaces
+        try:
+            self._build(np.ascontiguousarray(np.concatenate([before, added])))
+        except BaseException:
+            self._build(before)  # refused (an unbounded intersection ...): as it was
+            raise
 
     def close(self):
         """Ends incremental mode (scipy's method)."""

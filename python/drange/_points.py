@@ -78,6 +78,9 @@ class PointSetAttributes:
     def __copy__(self):
         result = object.__new__(type(self))
         result.__dict__.update(self.__dict__)
+        # The incremental state is the copy's own (sharing it, an add to one would change both).
+        if self.__dict__.get("_incremental") is not None:
+            result._incremental = result._new_incremental(result.points)
         return result
 
     def __deepcopy__(self, memo):

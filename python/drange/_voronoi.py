@@ -39,8 +39,9 @@ class Voronoi(PointSetAttributes):
         The vertices of each ridge, -1 for the point at infinity (3D: in cyclic order).
     regions : list of list of int
         Each cell's vertices, -1 when unbounded (2D: counter-clockwise). With the option 'Qz'
-        in qhull_options, one more region first, empty, as in scipy (Qhull's point at
-        infinity): no point's region; its volume is NaN and its region_point -1.
+        in qhull_options, one more region first, empty (Qhull's point at infinity, which scipy
+        has by default, at a place of Qhull's choosing): no point's region; its volume is NaN
+        and its region_point -1. Clipped cells keep the numbering without it.
     point_region : ndarray of int32, (npoints,)
         Each point's region; an exact duplicate shares the region of the point it copies.
     volumes : ndarray of double, (nregions,)
@@ -123,6 +124,8 @@ class Voronoi(PointSetAttributes):
         box : (lower, upper), each of ndim values; default: the points' bounding box enlarged
         by `margin` times its extent on every side. Returns a ClippedCells; the cells tile the box.
         """
+        if self.furthest_site:
+            raise NotImplementedError("clipped cells are the nearest-site diagram's; not available with furthest_site=True")
         if box is None:
             lower, upper = _drange.default_clip_box(self.points, float(margin))
         else:

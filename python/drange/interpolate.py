@@ -136,14 +136,16 @@ class NaturalNeighborInterpolator(ScatteredInterpolator):
         return self._state.natural_neighbours(xi)
 
     def __call__(self, *args):
-        """The interpolant at xi, shaped as LinearNDInterpolator's answer."""
+        """The interpolant at xi, shaped as LinearNDInterpolator's answer (fill_value where xi
+        is outside the hull or not finite, as there)."""
         xi, shape = self._queries(args)
-        offsets, ids, weights = self._state.natural_neighbours(xi)
+        finite = np.flatnonzero(np.isfinite(xi).all(axis=1))
+        offsets, ids, weights = self._state.natural_neighbours(np.ascontiguousarray(xi[finite]))
         result = np.full((len(xi), self.values.shape[1]), self.fill_value, dtype=self.values.dtype)
         inside = np.flatnonzero(offsets[1:] > offsets[:-1])
         if len(inside):
             # Empty queries hold no entries, so each kept start runs to the next kept one.
-            result[inside] = np.add.reduceat(weights[:, None] * self.values[ids], offsets[inside], axis=0)
+            result[finite[inside]] = np.add.reduceat(weights[:, None] * self.values[ids], offsets[inside], axis=0)
         return result.reshape(shape + self.values_shape)
 
 

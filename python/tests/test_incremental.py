@@ -80,11 +80,11 @@ def test_restart_close_and_errors():
 def test_copies_and_pickles_keep_their_own_state():
     points = np.random.default_rng(2).random((80, 3))
     original = drange.Delaunay(points[:40], incremental=True)
-    deep = copy.deepcopy(original)
+    deep, shallow = copy.deepcopy(original), copy.copy(original)
     restored = pickle.loads(pickle.dumps(original))
     original.add_points(points[40:60])
-    assert deep.npoints == 40 and restored.npoints == 40
-    for other in (deep, restored):
+    assert deep.npoints == 40 and restored.npoints == 40 and shallow.npoints == 40
+    for other in (deep, shallow, restored):
         other.add_points(points[40:])
         assert simplex_set(other.simplices) == simplex_set(drange.Delaunay(points).simplices)
     assert original.npoints == 60
@@ -118,6 +118,13 @@ def test_hull_and_halfspaces_grown_equal_fresh():
     fresh = drange.HalfspaceIntersection(np.r_[square, cut], [0.5, 0.5])
     assert np.allclose(np.sort(grown.intersections, axis=0), np.sort(fresh.intersections, axis=0))
     assert grown.dual_facets == fresh.dual_facets
+    # A refused add (the interior point is outside the new halfspace) leaves the object as it was.
+    with pytest.raises(drange.Error):
+        grown.add_halfspaces([[1.0, 1.0, -0.5]])
+    assert grown.nineq == 5 and np.allclose(np.sort(grown.intersections, axis=0), np.sort(fresh.intersections, axis=0))
+    assert len(grown.dual_points) == 5
+    with pytest.raises(NotImplementedError, match="furthest_site"):
+        drange.Voronoi(points[:, :2], furthest_site=True).clipped_cells()
 
 
 @pytest.mark.parametrize("ndim", [2, 3, 4])

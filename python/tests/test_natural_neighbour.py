@@ -64,7 +64,8 @@ def test_errors():
     interpolant = NaturalNeighborInterpolator(points, np.ones(20))
     with pytest.raises(ValueError, match="dimensions"):
         interpolant(np.zeros((2, 3)))
+    assert np.isnan(interpolant([[np.nan, 0.5], [0.5, np.inf]])).all()  # fill_value, as LinearND's
     with pytest.raises(ValueError, match="NaN"):
-        interpolant([[np.nan, 0.5]])
+        interpolant.coordinates([[np.nan, 0.5]])
     with pytest.raises(ValueError, match="values"):
         NaturalNeighborInterpolator(points, np.ones(19))
