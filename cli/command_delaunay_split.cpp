@@ -65,8 +65,9 @@ int triangulate_across_processes(const std::string& input, const Arguments& argu
   }
   const int worst = group.max(code);
   if (worst != kExitSuccess) {
-    // The lowest failing process speaks (a bad input fails every process the same way).
-    const int speaker = -group.max(code != kExitSuccess ? -group.rank() : -group.count());
+    // The lowest process with the worst code speaks (a bad input fails every process the same
+    // way), so that the message and the exit status agree.
+    const int speaker = -group.max(code == worst ? -group.rank() : -group.count());
     if (group.rank() == speaker) report_failure(failure, "delaunay", true);
     return worst;
   }

@@ -108,6 +108,8 @@ int report_failure(std::exception_ptr failure, const std::string& command_name, 
     code = kExitOutOfMemory;
   } catch (const std::exception& e) {
     message << "drange: internal error: " << e.what() << '\n';
+  } catch (...) {
+    message << "drange: internal error: an exception of unknown type\n";
   }
   if (print) std::cerr << message.str();
   return code;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <initializer_list>
+#include <new>
 #include <string>
 
 #include "drange/errors.hpp"
@@ -81,14 +82,21 @@ std::vector<T> gather_to_first(const std::vector<T>& values, MPI_Datatype type, 
   std::vector<int> sizes(static_cast<std::size_t>(count)), offsets(static_cast<std::size_t>(count));
   MPI_Gather(&mine, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
   std::vector<T> all;
+  int room = 1;  // whether process 0 could make room for everything; all learn it before Gatherv
   if (rank == 0) {
     int at = 0;
     for (int r = 0; r < count; ++r) {
       offsets[static_cast<std::size_t>(r)] = at;
       at += sizes[static_cast<std::size_t>(r)];
     }
-    all.resize(static_cast<std::size_t>(total));
+    try {
+      all.resize(static_cast<std::size_t>(total));
+    } catch (const std::bad_alloc&) {
+      room = 0;
+    }
   }
+  MPI_Bcast(&room, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (room == 0) throw std::bad_alloc();
   MPI_Gatherv(values.data(), mine, type, all.data(), sizes.data(), offsets.data(), type, 0, MPI_COMM_WORLD);
   return all;
 }

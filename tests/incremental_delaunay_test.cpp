@@ -238,6 +238,15 @@ TEST(NaturalNeighbours, LinearPrecisionDataPointsOutsideAndErrors) {
     EXPECT_EQ(found.offsets[10], found.offsets[9]) << "a query outside the hull has no neighbours";
     EXPECT_EQ(t.triangulation().simplices, IncrementalDelaunay(points).triangulation().simplices) << "probes change nothing";
   }
+  {
+    // Inside the points' box but outside their hull (a circle's): the conflicts reach the
+    // infinite cells, and there are no neighbours.
+    const PointCloud circle = drange::generate_points(Distribution::Sphere, 200, 2, 3);
+    IncrementalDelaunay t(circle);
+    const std::vector<double> corner{0.9, 0.9};
+    const auto found = t.natural_neighbours(PointsView(corner.data(), 1, 2));
+    EXPECT_EQ(found.offsets, (std::vector<std::size_t>{0, 0}));
+  }
   const PointCloud points = drange::generate_points(Distribution::Uniform, 30, 2, 1);
   IncrementalDelaunay furthest(points, true);
   const std::vector<double> x{0.5, 0.5};
