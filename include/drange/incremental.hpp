@@ -17,8 +17,8 @@ namespace drange {
 // symbolic perturbation). After any sequence of add_points, triangulation() has the same
 // simplices, as vertex sets, as delaunay() on all the points in the order added: the
 // triangulation under the perturbation is unique. The cost of add_points follows the change
-// (the simplices created and removed, and a walk to each new point), plus one pass over an
-// array of the points to keep their lexicographic ranks; the initial points are inserted in a
+// (the simplices created and removed, and a walk to each new point), plus a merge of the new
+// points into the lexicographic order and a pass over all the points to renumber their ranks; the initial points are inserted in a
 // biased randomized order, as Options::algorithm "incremental" does. One thread.
 //
 // With `furthest_site`, the furthest-site Delaunay triangulation instead: the simplices whose
@@ -38,7 +38,8 @@ class IncrementalDelaunay {
   // Adds `points` (the same dimension), numbered after those added before. An exact copy of
   // a point already there is a duplicate, left out as delaunay() leaves it. Throws InputError,
   // naming the point by its index among all the points, for a wrong dimension or a NaN or
-  // infinite coordinate; the triangulation is then unchanged.
+  // infinite coordinate; the triangulation is then unchanged. After any other exception (out
+  // of memory, more than 2^31 - 1 cells) the object is not to be used again.
   void add_points(PointsView points);
 
   // Sibson's natural-neighbour coordinates of each query point x in the triangulation now: the
@@ -50,7 +51,8 @@ class IncrementalDelaunay {
   // are computed in floating point, from the flag parts of the simplices x's insertion would
   // remove and create (extended precision near flat faces).
   // Throws UsageError for the furthest-site triangulation, InputError for a query of the wrong
-  // dimension or with a NaN or infinite coordinate (naming it).
+  // dimension or with a NaN or infinite coordinate (naming it). It probes the object's own
+  // state: like add_points, not to be called while another call on the object runs.
   struct NaturalNeighbours {
     std::vector<std::size_t> offsets;  // query q's neighbours: [offsets[q], offsets[q + 1])
     std::vector<std::int32_t> ids;     // input indices

@@ -41,7 +41,8 @@ class Delaunay(PointSetAttributes):
         algorithm, one thread; `variant` and `algorithm` are then not used), and each call
         removes the simplices whose circumspheres hold a new point and joins it to the cavity's
         boundary: the triangulation's update follows the change, and the result arrays are
-        then exported again (linear in their size). close() ends it.
+        then exported again (linear in their size). close() ends it. `progress` is not called
+        and Ctrl-C waits for the end of the call.
     threads : int, keyword only
         Threads for the search and for find_simplex; 0 (default) uses all cores.
     variant : str, keyword only

@@ -13,7 +13,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
+
+#include "drange/errors.hpp"
 
 namespace drange::engine {
 
@@ -72,6 +75,9 @@ class CellComplex {
       free_.pop_back();
       return c;
     }
+    // Cell ids are 32-bit (as the output's simplex numbers): past that, refuse rather than wrap.
+    if (cells_ >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+      throw InputError("the triangulation would have more than 2^31 - 1 cells, drange's limit");
     const auto c = static_cast<std::int32_t>(cells_++);
     data_.resize(data_.size() + static_cast<std::size_t>(stride_));
     return c;
