@@ -45,9 +45,9 @@ class StarWrapper {
   StarWrapper(const PointStore& points, FacetSearch& search, const FirstFacet& first);
 
   // Appends to `rows` (d+1 engine ids per simplex, positively oriented) every simplex of the
-  // stars of the points `wanted` (engine ids, distinct), each once, in the order the wrapping
-  // finds them, the points taken in increasing id order (the kd-tree's, so that the walks
-  // between them are short). Counts into `counters` the search's work and into `hull_facets`
+  // stars of the points `wanted` (engine ids; a repeat is ignored), each once, in the order
+  // the wrapping finds them, the points taken in increasing id order (the kd-tree's, so that
+  // the walks between them are short). Counts into `counters` the search's work and into `hull_facets`
   // the stars' facets on the hull. The cost is that of the simplices found and the walks.
   void stars(const std::vector<std::int32_t>& wanted, std::vector<std::int32_t>& rows, SearchCounters& counters,
              std::vector<std::int32_t>& hull_facets);
