@@ -52,7 +52,16 @@ int triangulate_file(const std::string& input, const Arguments& arguments) {
                                       : only   ? delaunay_stars(points, ids, options)
                                                : delaunay(points, options);
 
-  if (!triangulation.duplicates.empty() && !quiet)
+  write_delaunay_outputs(output, format, points, triangulation, arguments);
+  if (arguments.has("stats")) std::cerr << triangulation.stats.summary() << '\n';
+  return kExitSuccess;
+}
+
+}  // namespace
+
+void write_delaunay_outputs(const std::string& output, OutputFormat format, const PointCloud& points,
+                            const Triangulation& triangulation, const Arguments& arguments) {
+  if (!triangulation.duplicates.empty() && !arguments.has("quiet"))
     std::cerr << "drange: " << duplicates_message(triangulation.duplicates) << '\n';
   write_delaunay(output, format, points, triangulation);
   if (arguments.has("neighbors")) {
@@ -67,11 +76,7 @@ int triangulate_file(const std::string& input, const Arguments& arguments) {
     write_file_atomically(arguments.value_or("svg", ""),
                           [&](std::ostream& out) { write_svg(out, points, triangulation, nullptr, svg); });
   }
-  if (arguments.has("stats")) std::cerr << triangulation.stats.summary() << '\n';
-  return kExitSuccess;
 }
-
-}  // namespace
 
 std::string delaunay_help() {
   return std::string(

@@ -9,11 +9,9 @@
 // nothing is written.
 #include <algorithm>
 #include <cstdio>
-#include <iostream>
 #include <string>
 #include <vector>
 
-#include "command_common.hpp"
 #include "commands.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
@@ -84,14 +82,8 @@ int triangulate_across_processes(const std::string& input, const Arguments& argu
   whole.duplicates = part.duplicates;
   whole.stats = part.stats;
   whole.stats.simplices = whole.size();
-  if (arguments.has("neighbors") || format != OutputFormat::Qhull) link_neighbours(whole);
-  if (!whole.duplicates.empty() && !arguments.has("quiet"))
-    std::cerr << "drange: " << duplicates_message(whole.duplicates) << '\n';
-  write_delaunay(output, format, points, whole);
-  if (arguments.has("neighbors"))
-    write_file_atomically(arguments.value_or("neighbors", ""), [&](std::ostream& out) {
-      write_index_rows(out, whole.neighbors, whole.dim + 1);
-    });
+  if (options.compute_neighbors) link_neighbours(whole);
+  write_delaunay_outputs(output, format, points, whole, arguments);
   if (arguments.has("stats")) print_stats(group, figures, points.size(), whole.dim);
   return kExitSuccess;
 }

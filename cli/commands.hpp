@@ -35,6 +35,11 @@ std::string exit_codes_help();
 int triangulate_across_processes(const std::string& input, const Arguments& arguments, const std::string& output,
                                  OutputFormat format, const Options& options);
 
+// What `drange delaunay` writes of a triangulation: the duplicates' report (unless --quiet),
+// OUTPUT in `format`, and the --neighbors and --svg files.
+void write_delaunay_outputs(const std::string& output, OutputFormat format, const PointCloud& points,
+                            const Triangulation& triangulation, const Arguments& arguments);
+
 // Runs the built-in demonstration of `drange delaunay` without INPUT.
 int run_delaunay_demo(const std::string& variant, int threads, bool print_stats);
 

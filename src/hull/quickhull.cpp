@@ -23,8 +23,8 @@ Quickhull::Quickhull(const double* coords, std::int32_t n, int d, bool filters, 
       simplex_(std::move(simplex)),
       perturbation_(coords, d, simplex_.ids, simplex_.interior),
       minors_(d),
-      ids_(static_cast<std::size_t>(d + 1)),
-      tuple_(static_cast<std::size_t>(d)) {}
+      tuple_(static_cast<std::size_t>(d)),
+      ids_(static_cast<std::size_t>(d + 1)) {}
 
 std::int32_t Quickhull::new_facet() {
   std::int32_t f;
@@ -209,22 +209,22 @@ HullFacets Quickhull::run() {
 void Quickhull::add_point(std::int32_t start) {
   const int d = d_;
   const std::int32_t p = sets_[static_cast<std::size_t>(start)].farthest;
-  ++round_;
+  ++addition_;
   // The facets that see p: from `start`, across ridges, testing each neighbour once.
   std::vector<std::int32_t>& visible = visible_facets_;
   visible.assign(1, start);
   apex_on_plane_.assign(1, 0);
-  seen_[static_cast<std::size_t>(start)] = round_;
+  seen_[static_cast<std::size_t>(start)] = addition_;
   visible_[static_cast<std::size_t>(start)] = 1;
   for (std::size_t i = 0; i < visible.size(); ++i) {
     const std::int32_t f = visible[i];
     for (int k = 0; k < d; ++k) {
       const std::int32_t g = neighbors(f)[k];
-      if (seen_[static_cast<std::size_t>(g)] == round_) continue;
+      if (seen_[static_cast<std::size_t>(g)] == addition_) continue;
       double height = 0.0;
       bool on = false;
       const bool sees = side(g, p, point(p), height, on) > 0;
-      seen_[static_cast<std::size_t>(g)] = round_;
+      seen_[static_cast<std::size_t>(g)] = addition_;
       visible_[static_cast<std::size_t>(g)] = sees;
       if (sees) {
         visible.push_back(g);
@@ -241,7 +241,7 @@ void Quickhull::add_point(std::int32_t start) {
     for (int k = 0; k < d; ++k) {
       const std::int32_t f = visible[i];
       const std::int32_t g = neighbors(f)[k];
-      if (visible_[static_cast<std::size_t>(g)]) continue;  // every neighbour was tested this round
+      if (visible_[static_cast<std::size_t>(g)]) continue;  // every neighbour was tested during this addition
       const std::int32_t n = new_facet();
       std::copy(vertices(f), vertices(f) + d, vertices(n));
       vertices(n)[k] = p;
@@ -254,7 +254,7 @@ void Quickhull::add_point(std::int32_t start) {
       created_.push_back(n);
       apex_place_.push_back(k);
       creator_.push_back(static_cast<std::int32_t>(i));
-      for (int j = 0; j < d; ++j) in_cone_[static_cast<std::size_t>(vertices(n)[j])] = round_;
+      for (int j = 0; j < d; ++j) in_cone_[static_cast<std::size_t>(vertices(n)[j])] = addition_;
     }
   index_horizon();
   link_new_facets();
@@ -280,8 +280,8 @@ void Quickhull::add_point(std::int32_t start) {
     if (apex_on_plane)
       for (int k = 0; k < d; ++k) {
         const std::int32_t v = vertices(f)[k];
-        if (in_cone_[static_cast<std::size_t>(v)] == round_) continue;
-        in_cone_[static_cast<std::size_t>(v)] = round_;  // once, though several dead facets hold it
+        if (in_cone_[static_cast<std::size_t>(v)] == addition_) continue;
+        in_cone_[static_cast<std::size_t>(v)] = addition_;  // once, though several dead facets hold it
         keep_if_on_boundary(v, created_);
       }
     sets_[static_cast<std::size_t>(f)] = Sets{};  // frees the sets' memory
@@ -398,7 +398,7 @@ void Quickhull::link_new_facets() {
         if (step > visible_facets_.size()) throw InternalError("convex hull: the horizon does not close around a face");
         const std::int32_t h = neighbors(g)[through];
         const std::size_t slot = static_cast<std::size_t>(h);
-        if (!(seen_[slot] == round_ && visible_[slot])) break;
+        if (!(seen_[slot] == addition_ && visible_[slot])) break;
         // h = e + kept + its own vertex y: its other ridge through e is opposite `kept`.
         const std::int32_t* hv = vertices(h);
         const int next = static_cast<int>(std::find(hv, hv + d, kept) - hv);

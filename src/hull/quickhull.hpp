@@ -119,7 +119,7 @@ class Quickhull {
   // as there are visible facets, or at an exact tie (where coplanarity must be seen, and
   // where an inner ridge's hyperplane may pass through the interior point), it returns false
   // and the scan over the new facets decides.
-  void index_horizon();  // walk_index_ and horizon_ for this round
+  void index_horizon();  // walk_index_ and horizon_ for this addition
   bool walk(std::int32_t x, const double* px, std::int32_t from, std::int32_t p);
   void link_new_facets();  // the neighbours of created_ across the ridges through the apex
 
@@ -140,10 +140,10 @@ class Quickhull {
   std::vector<std::int32_t> pending_;  // facets that may have outside points, in the order made
 
   // add_point's marks and scratch, kept across its calls.
-  std::uint32_t round_ = 0;
-  std::vector<std::uint32_t> seen_;      // per slot: tested this round
+  std::uint32_t addition_ = 0;           // add_point's calls so far: a mark equal to it is current
+  std::vector<std::uint32_t> seen_;      // per slot: tested during this addition
   std::vector<char> visible_;            // per slot: and found visible
-  std::vector<std::uint32_t> in_cone_;   // per point: a vertex of a new facet this round
+  std::vector<std::uint32_t> in_cone_;   // per point: a vertex of a new facet of this addition
   std::vector<std::int32_t> visible_facets_, created_;
   std::vector<int> apex_place_;          // per new facet: the place of the apex among its vertices
   std::vector<std::int32_t> creator_;    // per new facet: its visible predecessor's index in visible_facets_
@@ -151,7 +151,7 @@ class Quickhull {
   // The walks' data, per visible facet i and place k: the new facet on that ridge (-1 inside
   // the visible region), and the coefficients for the hyperplane through the apex and the
   // ridge, computed at their first use.
-  std::vector<std::int32_t> walk_index_;  // per slot: its index among this round's visible facets
+  std::vector<std::int32_t> walk_index_;  // per slot: its index among this addition's visible facets
   std::vector<std::int32_t> horizon_;
   std::vector<double> ridge_normal_, ridge_abs_;
   std::vector<char> ridge_ready_;
