@@ -24,7 +24,7 @@ const std::vector<OptionSpec> kOptions = {
     {"output", 'o', true}, {"format", 0, true},    {"ridges", 0, true}, {"cells", 0, true},
     {"box", 0, true},      {"svg", 0, true},       {"circles", 0, false}, {"no-volumes", 0, false},
     {"stats", 0, false},   {"variant", 0, true},   {"threads", 0, true}, {"algorithm", 0, true}, {"quiet", 'q', false},
-    {"only", 0, true},
+    {"only", 0, true},     {"cell-vertices", 0, false},
 };
 
 // --only: the cells of the given points, from their stars (drange::voronoi_cells).
@@ -45,6 +45,25 @@ int cells_of_file(const PointCloud& points, const std::vector<std::int64_t>& ids
 
 bool needs_cells(OutputFormat format) { return format == OutputFormat::Vtu || format == OutputFormat::Off; }
 
+// --cells FILE.txt: the clipped cells streamed a batch at a time from the points' Delaunay
+// stars (drange::stream_clipped_cells), one line per cell, without the whole diagram.
+void write_text_cells(const PointCloud& points, const Options& options, const Arguments& arguments,
+                      bool report_duplicates) {
+  const Box box = arguments.has("box") ? parse_box(arguments.value_or("box", ""), points.dim) : default_clip_box(points);
+  const bool vertices = arguments.has("cell-vertices");
+  CellStreamReport report;
+  write_file_atomically(arguments.value_or("cells", ""), [&](std::ostream& out) {
+    report = stream_clipped_cells(
+        points, box, options, [&](const CellBatch& batch) { return cells_text(batch, vertices); },
+        [&](const std::string& text) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
+  });
+  if (report_duplicates && !report.duplicates.empty())
+    std::cerr << "drange: " << duplicates_message(report.duplicates) << '\n';
+  if (arguments.has("stats"))
+    std::cerr << "cells=" << report.cells << " star_simplices=" << report.star_simplices << " batches=" << report.batches
+              << " threads=" << report.threads << '\n';
+}
+
 int diagram_of_file(const std::string& input, const Arguments& arguments) {
   const std::string output = arguments.value_or("output", "-");
   expect_distinct_outputs(arguments, {"ridges", "cells", "svg"}, output);
@@ -52,10 +71,17 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
                                                       : output_format_from_path(output, OutputFormat::Qhull);
   const std::string cells_path = arguments.value_or("cells", "");
   // A cell format by the extension; VTU on standard output. Qhull's layouts have no cells.
+  // A .txt file is streamed (write_text_cells); without -o, --format, --ridges or --svg the
+  // whole diagram is not computed at all.
+  const bool text_cells = arguments.has("cells") && is_cells_text_path(cells_path);
   const OutputFormat cells_format =
       cells_path == "-" ? OutputFormat::Vtu : output_format_from_path(cells_path, OutputFormat::Qhull);
-  if (arguments.has("cells") && cells_format == OutputFormat::Qhull)
-    throw UsageError("--cells: Qhull's layouts hold no clipped cells; name a .vtu, .off, .json or .npz file");
+  if (arguments.has("cells") && !text_cells && cells_format == OutputFormat::Qhull)
+    throw UsageError("--cells: Qhull's layouts hold no clipped cells; name a .vtu, .off, .json, .npz or .txt file");
+  if (arguments.has("cell-vertices") && !text_cells)
+    throw UsageError("--cell-vertices adds the corners to the lines of a text cells file: add --cells FILE.txt");
+  const bool diagram_wanted =
+      !text_cells || arguments.has("output") || arguments.has("format") || arguments.has("ridges") || arguments.has("svg");
   if (arguments.has("box") && !arguments.has("cells") && format == OutputFormat::Qhull)
     throw UsageError("--box clips the cells, which Qhull's layout does not hold: add --cells FILE, or choose "
                      "--format json, npz, vtu or off");
@@ -80,6 +106,10 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
   const PointCloud points = read_points(input);
   expect_svg_dimension(arguments, points.dim);
   if (only) return cells_of_file(points, ids, options, arguments);
+  if (!diagram_wanted) {
+    write_text_cells(points, options.delaunay, arguments, !quiet);
+    return kExitSuccess;
+  }
   options.delaunay.progress = make_progress_reporter(points.size(), points.dim, quiet);
   const Triangulation triangulation = delaunay(points, options.delaunay);
   if (!triangulation.duplicates.empty() && !quiet)
@@ -87,7 +117,8 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
   const Voronoi diagram = voronoi(points, triangulation, options);
 
   // Clipped cells when asked for (--cells, --box, or an output format that draws them).
-  const bool want_cells = arguments.has("cells") || arguments.has("box") || needs_cells(format);
+  const bool want_cells =
+      (arguments.has("cells") && !text_cells) || (arguments.has("box") && format != OutputFormat::Qhull) || needs_cells(format);
   ClippedCells cells;
   if (want_cells) {
     const Box box = arguments.has("box") ? parse_box(arguments.value_or("box", ""), points.dim) : default_clip_box(points);
@@ -98,7 +129,7 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
   write_voronoi(output, format, points, diagram, clipped);
   if (arguments.has("ridges"))
     write_file_atomically(arguments.value_or("ridges", ""), [&](std::ostream& out) { write_qvoronoi_fv(out, diagram); });
-  if (arguments.has("cells")) write_voronoi(cells_path, cells_format, points, diagram, clipped);
+  if (arguments.has("cells") && !text_cells) write_voronoi(cells_path, cells_format, points, diagram, clipped);
   if (arguments.has("svg")) {
     SvgOptions svg;
     svg.circumcircles = arguments.has("circles");
@@ -108,6 +139,7 @@ int diagram_of_file(const std::string& input, const Arguments& arguments) {
   if (arguments.has("stats"))
     std::cerr << triangulation.stats.summary() << " voronoi_vertices=" << diagram.num_vertices()
               << " ridges=" << diagram.num_ridges() << '\n';
+  if (text_cells) write_text_cells(points, options.delaunay, arguments, false);
   return kExitSuccess;
 }
 
@@ -130,8 +162,17 @@ std::string voronoi_help() {
          "                        otherwise qhull, the `qvoronoi o` layout)\n"
          "      --ridges FILE     also write the ridges in the `qvoronoi Fv` layout\n"
          "      --cells FILE      also write the cells clipped to the box (2D/3D), as .vtu, .off,\n"
-         "                        .json or .npz (by FILE's extension; - is VTU on standard\n"
-         "                        output), with each cell's area/volume\n"
+         "                        .json, .npz or .txt (by FILE's extension; - is VTU on standard\n"
+         "                        output), with each cell's area/volume. A .txt file is made\n"
+         "                        cell by cell from the points' Delaunay stars, without the\n"
+         "                        whole diagram (which is not computed unless -o, --format,\n"
+         "                        --ridges or --svg asks for it): one line per distinct point,\n"
+         "                        \"ID VOLUME\", the point's input index and its cell's area or\n"
+         "                        volume (0 when the cell misses the box), in the kd-tree's\n"
+         "                        order of the points, the same for every --threads\n"
+         "      --cell-vertices   with --cells FILE.txt: each line goes on with the cell's\n"
+         "                        corner count K and its corners, \"x y\" (2D, counter-clockwise)\n"
+         "                        or \"x y z\" (3D, the cell is their convex hull)\n"
          "      --box LIST        the clipping box: x0,y0[,z0],x1,y1[,z1] (default: the points'\n"
          "                        bounding box enlarged by 10% of its size on every side);\n"
          "                        for --cells, or the cells in json, npz, vtu and off output\n"
@@ -172,6 +213,7 @@ std::string voronoi_help() {
          "  drange generate uniform 1000 2 -o points.txt\n"
          "  drange voronoi points.txt -o diagram.json --svg diagram.svg\n"
          "  drange voronoi points.txt --cells cells.vtu --box 0,0,1,1\n"
+         "  drange voronoi points.txt --cells cells.txt --box 0,0,1,1 --threads 2\n"
          "  rbox 100 D3 | drange voronoi > diagram.txt\n"
          "\n" +
          exit_codes_help();

@@ -151,6 +151,20 @@ void write_delaunay_off(std::ostream& out, PointsView points, const Triangulatio
 // orientations. The vertices are ClippedCells::points. Throws UsageError unless d is 2 or 3.
 void write_cells_off(std::ostream& out, const ClippedCells& cells);
 
+// ------------------------------------------------------------------------------ Text cells
+
+// Clipped cells as plain text, one line per cell: the input point of the cell, its volume
+// (area in 2D), and with `vertices` its number of corners k and their coordinates, "x y" (2D)
+// or "x y z" (3D) each, all on the line: "p v" or "p v k x1 y1 ... xk yk". In 2D the corners
+// run counter-clockwise; in 3D they come in no particular order (the cell is convex: their
+// convex hull). An empty cell (it misses the box) is "p 0", or "p 0 0". Numbers in the
+// shortest form that reads back as the same double. Returns the text of one batch of
+// drange::stream_clipped_cells, so that batches are formatted on their own threads.
+std::string cells_text(const CellBatch& batch, bool vertices);
+
+// Whether `path` names a text cells file: it ends in ".txt", in any letter case.
+bool is_cells_text_path(const std::string& path);
+
 // ------------------------------------------------------------------------------ Qhull
 
 // The layout of `qvoronoi o`: line 1 the dimension; line 2 "nv+1 n 1" (Voronoi vertices
