@@ -54,7 +54,9 @@ void write_text_cells(const PointCloud& points, const Options& options, const Ar
   CellStreamReport report;
   write_file_atomically(arguments.value_or("cells", ""), [&](std::ostream& out) {
     report = stream_clipped_cells(
-        points, box, options, [&](const CellBatch& batch) { return cells_text(batch, vertices); },
+        points, box, options, [&](const ClippedCells& cell, std::int32_t point, std::string& text) {
+          append_cell_text(text, cell, 0, point, vertices);
+        },
         [&](const std::string& text) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
   });
   if (report_duplicates && !report.duplicates.empty())

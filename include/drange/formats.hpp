@@ -158,9 +158,9 @@ void write_cells_off(std::ostream& out, const ClippedCells& cells);
 // or "x y z" (3D) each, all on the line: "p v" or "p v k x1 y1 ... xk yk". In 2D the corners
 // run counter-clockwise; in 3D they come in no particular order (the cell is convex: their
 // convex hull). An empty cell (it misses the box) is "p 0", or "p 0 0". Numbers in the
-// shortest form that reads back as the same double. Returns the text of one batch of
-// drange::stream_clipped_cells, so that batches are formatted on their own threads.
-std::string cells_text(const CellBatch& batch, bool vertices);
+// shortest form that reads back as the same double. Appends the line of cell c of `cells`,
+// that of input point `point` (drange::stream_clipped_cells formats each cell this way).
+void append_cell_text(std::string& text, const ClippedCells& cells, std::size_t c, std::int32_t point, bool vertices);
 
 // Whether `path` names a text cells file: it ends in ".txt", in any letter case.
 bool is_cells_text_path(const std::string& path);

@@ -123,14 +123,6 @@ Voronoi voronoi_cells(PointsView points, const std::vector<std::int64_t>& ids, c
 // dimension or a box that is empty, not finite, or of the wrong dimension.
 ClippedCells clip_cells(PointsView points, const Voronoi& diagram, const Box& box);
 
-// A batch of clipped cells, as stream_clipped_cells hands it over: cell c (of `cells`) is the
-// cell of input point point[c]. Batches are numbered 0, 1, ... in the order they are written.
-struct CellBatch {
-  std::size_t index = 0;
-  ClippedCells cells;
-  std::vector<std::int32_t> point;
-};
-
 // What stream_clipped_cells did.
 struct CellStreamReport {
   std::vector<Duplicate> duplicates;  // exact copies: no cell of their own
@@ -142,20 +134,22 @@ struct CellStreamReport {
 
 // The cell of every distinct point clipped to the box (d = 2, 3), computed a batch of points
 // at a time from their Delaunay stars (delaunay/local_star.hpp) without the whole
-// triangulation or diagram: memory holds the input, its kd-tree and a few batches per thread.
+// triangulation or diagram: memory holds the input, its kd-tree, and per thread the stars of a
+// batch and the text of a few batches.
 // The cells are clip_cells' cells of the whole diagram, up to rounding: a cell is cut by the
 // bisectors of every Delaunay neighbour of its point, which include its ridge partners (the
 // others only touch the cell), in another order when offsets tie. Each distinct point has one
 // cell, named by its first copy (an exact duplicate shares it, as in clip_cells); a cell that
 // misses the box is empty (no faces, volume 0).
-// The batches follow the kd-tree's order of the points, the same for every thread count.
-// `format(batch)` runs on the thread that computed the batch, concurrently with other batches;
-// `write` receives the texts in batch order, one call at a time, so the output is the same for
-// every thread count. Of `options`, threads, variant and algorithm are read.
+// `format(cell, point, text)` appends to the text of its batch the cell of input point `point`
+// (`cell` holds that one cell); it runs on the thread that computed the batch, concurrently
+// with other batches. `write` receives the batches' texts in batch order, one call at a time.
+// The batches follow the kd-tree's order of the points, so the output is the same for every
+// thread count. Of `options`, threads, variant and algorithm are read.
 // Throws UsageError for another dimension than 2 or 3, a bad box or options; as drange::delaunay
 // for bad or degenerate points; and whatever format or write throws (no batch is written after).
 CellStreamReport stream_clipped_cells(PointsView points, const Box& box, const Options& options,
-                                      const std::function<std::string(const CellBatch&)>& format,
+                                      const std::function<void(const ClippedCells& cell, std::int32_t point, std::string& text)>& format,
                                       const std::function<void(const std::string&)>& write);
 
 }  // namespace drange

@@ -52,21 +52,37 @@ ClipResult ConvexPolyhedron::clip(const double* normal, double offset, double to
   next_faces_.clear();
   new_id_.assign(corners_.size(), -1);
   crossings_.clear();
+  first_crossing_.assign(corners_.size(), -1);
+  plane_edges_.clear();
   for (std::size_t f = 0; f < num_faces(); ++f) {
     const std::size_t k = face_size(f);
-    bool has_inside = false;
-    for (std::size_t i = 0; i < k; ++i) has_inside |= side_[static_cast<std::size_t>(face_corner(f, i))] == Side::Inside;
+    bool has_inside = false, all_inside = true;
+    for (std::size_t i = 0; i < k; ++i) {
+      const Side side = side_[static_cast<std::size_t>(face_corner(f, i))];
+      has_inside |= side == Side::Inside;
+      all_inside &= side == Side::Inside;
+    }
     if (!has_inside) continue;
     // A face with a corner inside keeps at least that corner and its two neighbours (or the
-    // crossing points next to it): 3 corners or more.
-    loop_.clear();
-    for (std::size_t i = 0; i < k; ++i) {
-      const std::int32_t a = face_corner(f, i), b = face_corner(f, i + 1 == k ? 0 : i + 1);
-      const Side side_a = side_[static_cast<std::size_t>(a)], side_b = side_[static_cast<std::size_t>(b)];
-      if (side_a != Side::Outside) loop_.push_back(kept_corner(a, side_a == Side::On));
-      if (crosses(side_a, side_b)) loop_.push_back(crossing_corner(a, b));
+    // crossing points next to it): 3 corners or more. It is written in place at the end of
+    // next_faces_, which has room for each corner and a crossing after it.
+    const std::size_t start = next_faces_.size();
+    next_faces_.resize(start + 2 * k);
+    std::int32_t* face = next_faces_.data() + start;
+    std::size_t size = 0;
+    if (all_inside) {  // kept whole: no crossing, no corner on the plane
+      for (std::size_t i = 0; i < k; ++i) face[size++] = kept_corner(face_corner(f, i), false);
+    } else {
+      for (std::size_t i = 0; i < k; ++i) {
+        const std::int32_t a = face_corner(f, i), b = face_corner(f, i + 1 == k ? 0 : i + 1);
+        const Side side_a = side_[static_cast<std::size_t>(a)], side_b = side_[static_cast<std::size_t>(b)];
+        if (side_a != Side::Outside) face[size++] = kept_corner(a, side_a == Side::On);
+        if (crosses(side_a, side_b)) face[size++] = crossing_corner(a, b);
+      }
+      add_plane_edges(face, size);
     }
-    end_face();
+    next_faces_.resize(start + size);
+    next_face_start_.push_back(static_cast<std::int32_t>(next_faces_.size()));
   }
   add_cap(normal);
   // Only edges on the plane can be short: an edge from a corner inside to a crossing point is
@@ -90,29 +106,29 @@ std::int32_t ConvexPolyhedron::kept_corner(std::int32_t v, bool on_plane) {
 }
 
 std::int32_t ConvexPolyhedron::crossing_corner(std::int32_t a, std::int32_t b) {
-  const Edge edge{std::min(a, b), std::max(a, b)};
-  // A cut crosses few edges (about twice the cap's corners): a linear search is fastest.
-  for (const Crossing& c : crossings_)
-    if (c.edge == edge) return c.id;
   const auto in = static_cast<std::size_t>(side_[static_cast<std::size_t>(a)] == Side::Inside ? a : b);
-  const auto out = static_cast<std::size_t>(in == static_cast<std::size_t>(a) ? b : a);
+  const auto out = static_cast<std::int32_t>(in == static_cast<std::size_t>(a) ? b : a);
+  // The crossings made so far on the edges of corner `in` (a corner has few edges).
+  for (std::int32_t c = first_crossing_[in]; c >= 0; c = crossings_[static_cast<std::size_t>(c)].next)
+    if (crossings_[static_cast<std::size_t>(c)].out == out) return crossings_[static_cast<std::size_t>(c)].id;
   const auto id = static_cast<std::int32_t>(next_corners_.size());
-  next_corners_.push_back(crossing_point(corners_[in], distance_[in], corners_[out], distance_[out]));
+  const auto o = static_cast<std::size_t>(out);
+  next_corners_.push_back(crossing_point(corners_[in], distance_[in], corners_[o], distance_[o]));
   next_on_plane_.push_back(true);
-  crossings_.push_back({edge, id});
+  crossings_.push_back({out, id, first_crossing_[in]});
+  first_crossing_[in] = static_cast<std::int32_t>(crossings_.size() - 1);
   return id;
 }
 
-void ConvexPolyhedron::add_cap(const double* normal) {
-  // The kept faces' edges with both ends on the plane...
-  plane_edges_.clear();
-  for (std::size_t f = 0; f + 1 < next_face_start_.size(); ++f) {
-    const auto begin = static_cast<std::size_t>(next_face_start_[f]), end = static_cast<std::size_t>(next_face_start_[f + 1]);
-    for (std::size_t i = begin; i < end; ++i) {
-      const std::int32_t a = next_faces_[i], b = next_faces_[i + 1 == end ? begin : i + 1];
-      if (next_on_plane_[static_cast<std::size_t>(a)] && next_on_plane_[static_cast<std::size_t>(b)]) plane_edges_.push_back({a, b});
-    }
+void ConvexPolyhedron::add_plane_edges(const std::int32_t* face, std::size_t k) {
+  for (std::size_t i = 0; i < k; ++i) {
+    const std::int32_t a = face[i], b = face[i + 1 == k ? 0 : i + 1];
+    if (next_on_plane_[static_cast<std::size_t>(a)] && next_on_plane_[static_cast<std::size_t>(b)]) plane_edges_.push_back({a, b});
   }
+}
+
+void ConvexPolyhedron::add_cap(const double* normal) {
+  // The kept faces' edges with both ends on the plane (plane_edges_, gathered by clip)...
   // ...whose reverse is missing border the cap, which runs along them the other way. (An
   // edge on the plane kept in both directions is a crease the plane only touches.)
   cap_edges_.clear();

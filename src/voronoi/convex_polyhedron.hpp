@@ -59,6 +59,9 @@ class ConvexPolyhedron {
   std::int32_t kept_corner(std::int32_t v, bool on_plane);
   // The id of the crossing point on the edge a-b (made on first use).
   std::int32_t crossing_corner(std::int32_t a, std::int32_t b);
+  // Appends to plane_edges_ the edges of a face being built (`face`, k corners) with both ends
+  // on the plane.
+  void add_plane_edges(const std::int32_t* face, std::size_t k);
   // Merges the corners joined by an edge no longer than tol and drops the faces left with
   // fewer than 3 corners.
   void merge_short_edges(double tol);
@@ -82,11 +85,15 @@ class ConvexPolyhedron {
   std::vector<double> distance_;
   std::vector<Side> side_;
   std::vector<std::int32_t> new_id_;
+  // The crossing points made by a clip, listed per inside corner: first_crossing_[in] is the
+  // last one made on an edge of old corner `in`, and `next` the one made before it there.
   struct Crossing {
-    Edge edge;  // old corner ids, first < second
+    std::int32_t out;  // the edge's old corner outside
     std::int32_t id;
+    std::int32_t next;
   };
   std::vector<Crossing> crossings_;
+  std::vector<std::int32_t> first_crossing_;
   std::vector<std::int32_t> loop_;
   std::vector<Edge> plane_edges_, cap_edges_;
 };

@@ -71,7 +71,7 @@ double max_norm(const std::vector<std::array<double, D>>& corners) {
   for (const auto& x : corners) {
     double sum = 0;
     for (std::size_t k = 0; k < D; ++k) sum += x[k] * x[k];
-    largest = std::fmax(largest, sum);
+    if (sum > largest) largest = sum;  // not std::fmax: a library call here, in the clip's inner loop
   }
   return std::sqrt(largest);
 }

@@ -10,8 +10,9 @@
 //
 // Threads take batches in increasing order, each with its own FacetSearch, StarWrapper and
 // clipper over the shared read-only PointStore. A thread does not start batch b before batch
-// b - window has been written, so at most `window` batches wait in memory; the thread that
-// hands over the batch next in line writes it and every following one that is ready.
+// b - window has been written, so at most `window` batches' texts wait in memory; the thread
+// that hands over the batch next in line writes it and every following one that is ready.
+// Each cell is formatted as soon as it is clipped, so only its text outlives it.
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
@@ -37,9 +38,9 @@ namespace drange {
 namespace {
 
 // Points per batch: at least kMinBatch, so that the simplices found twice (those reaching into
-// the next batch) stay a small part of the work, and at least 1/kMaxBatches of the points,
-// because each StarWrapper::stars call sets up marks for every point.
-constexpr std::size_t kMinBatch = 4096;
+// the next batch) stay a small part of the work, and at least 1/kMaxBatches of the points, because each StarWrapper::stars call sets
+// up marks for every point.
+constexpr std::size_t kMinBatch = 16384;
 constexpr std::size_t kMaxBatches = 256;
 // Batches computed ahead of the one being written, per thread.
 constexpr std::size_t kWindowPerThread = 2;
@@ -101,7 +102,7 @@ void clear_cells(ClippedCells& cells) {
   cells.volumes.clear();
 }
 
-// One thread's tools and scratch space; its batches' cells.
+// One thread's tools and scratch space.
 class BatchWorker {
  public:
   BatchWorker(PointsView input, const Box& box, const engine::PointStore& points, const engine::SearchOptions& options,
@@ -111,12 +112,13 @@ class BatchWorker {
         wrapper_(points, search_, first),
         clipper_(input, box),
         seen_(static_cast<std::size_t>(points.size), -1) {
-    batch_.cells.dim = input.dim;
-    batch_.cells.box = box;
+    cell_.dim = input.dim;
+    cell_.box = box;
   }
 
-  // The cells of engine ids [begin, end).
-  const CellBatch& cells(std::size_t index, std::int32_t begin, std::int32_t end) {
+  // The text of the cells of engine ids [begin, end).
+  template <class Format>
+  std::string cells(std::int32_t begin, std::int32_t end, const Format& format) {
     const auto width = static_cast<std::size_t>(points_.dim + 1);
     const auto count = static_cast<std::size_t>(end - begin);
     wanted_.resize(count);
@@ -144,9 +146,7 @@ class BatchWorker {
           if (b != a) neighbours_[at++] = rows_[r + b];
       }
 
-    batch_.index = index;
-    batch_.point.clear();
-    clear_cells(batch_.cells);
+    std::string text;
     for (std::size_t i = 0; i < count; ++i) {
       const auto p = static_cast<std::int32_t>(begin + static_cast<std::int32_t>(i));
       // Each neighbour once (seen_[v] == p: v is already a partner of p), as an input index.
@@ -158,10 +158,11 @@ class BatchWorker {
         partners_.push_back(points_.input_index[static_cast<std::size_t>(v)]);
       }
       const std::int32_t id = points_.input_index[static_cast<std::size_t>(p)];
-      clipper_.append(static_cast<std::size_t>(id), partners_.data(), partners_.size(), batch_.cells);
-      batch_.point.push_back(id);
+      clear_cells(cell_);
+      clipper_.append(static_cast<std::size_t>(id), partners_.data(), partners_.size(), cell_);
+      format(cell_, id, text);
     }
-    return batch_;
+    return text;
   }
 
   std::size_t star_simplices() const { return star_simplices_; }
@@ -176,13 +177,13 @@ class BatchWorker {
   std::vector<std::size_t> offsets_, next_;
   std::vector<std::int32_t> seen_;  // by engine id: the last point that took it as a partner
   std::size_t star_simplices_ = 0;
-  CellBatch batch_;
+  ClippedCells cell_;  // the cell being clipped
 };
 
 }  // namespace
 
 CellStreamReport stream_clipped_cells(PointsView input, const Box& box, const Options& options,
-                                      const std::function<std::string(const CellBatch&)>& format,
+                                      const std::function<void(const ClippedCells&, std::int32_t, std::string&)>& format,
                                       const std::function<void(const std::string&)>& write) {
   if (input.dim != 2 && input.dim != 3)
     throw UsageError("clipped cells are computed in 2D and 3D; the points have dimension " + std::to_string(input.dim));
@@ -212,7 +213,7 @@ CellStreamReport stream_clipped_cells(PointsView input, const Box& box, const Op
         for (std::size_t b; (b = next_batch.fetch_add(1)) < batches && writer.wait_turn(b);) {
           const auto begin = static_cast<std::int32_t>(b * batch_size);
           const auto end = static_cast<std::int32_t>(std::min(n, (b + 1) * batch_size));
-          writer.deliver(b, format(worker.cells(b, begin, end)));
+          writer.deliver(b, worker.cells(begin, end, format));
         }
         star_simplices += worker.star_simplices();
       },
