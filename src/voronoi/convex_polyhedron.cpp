@@ -37,6 +37,16 @@ void ConvexPolyhedron::clear() {
   radius_ = 0;
 }
 
+inline std::int32_t ConvexPolyhedron::kept_corner(std::int32_t v, bool on_plane) {
+  std::int32_t& id = new_id_[static_cast<std::size_t>(v)];
+  if (id < 0) {
+    id = static_cast<std::int32_t>(next_corners_.size());
+    next_corners_.push_back(corners_[static_cast<std::size_t>(v)]);
+    next_on_plane_.push_back(on_plane);
+  }
+  return id;
+}
+
 ClipResult ConvexPolyhedron::clip(const double* normal, double offset, double tol) {
   if (empty()) return ClipResult::Empty;
   if (offset - tol >= radius_) return ClipResult::Unchanged;  // no corner reaches the plane
@@ -56,9 +66,10 @@ ClipResult ConvexPolyhedron::clip(const double* normal, double offset, double to
   plane_edges_.clear();
   for (std::size_t f = 0; f < num_faces(); ++f) {
     const std::size_t k = face_size(f);
+    const std::int32_t* row = faces_.data() + face_start_[f];
     bool has_inside = false, all_inside = true;
     for (std::size_t i = 0; i < k; ++i) {
-      const Side side = side_[static_cast<std::size_t>(face_corner(f, i))];
+      const Side side = side_[static_cast<std::size_t>(row[i])];
       has_inside |= side == Side::Inside;
       all_inside &= side == Side::Inside;
     }
@@ -71,10 +82,10 @@ ClipResult ConvexPolyhedron::clip(const double* normal, double offset, double to
     std::int32_t* face = next_faces_.data() + start;
     std::size_t size = 0;
     if (all_inside) {  // kept whole: no crossing, no corner on the plane
-      for (std::size_t i = 0; i < k; ++i) face[size++] = kept_corner(face_corner(f, i), false);
+      for (std::size_t i = 0; i < k; ++i) face[size++] = kept_corner(row[i], false);
     } else {
       for (std::size_t i = 0; i < k; ++i) {
-        const std::int32_t a = face_corner(f, i), b = face_corner(f, i + 1 == k ? 0 : i + 1);
+        const std::int32_t a = row[i], b = row[i + 1 == k ? 0 : i + 1];
         const Side side_a = side_[static_cast<std::size_t>(a)], side_b = side_[static_cast<std::size_t>(b)];
         if (side_a != Side::Outside) face[size++] = kept_corner(a, side_a == Side::On);
         if (crosses(side_a, side_b)) face[size++] = crossing_corner(a, b);
@@ -93,16 +104,6 @@ ClipResult ConvexPolyhedron::clip(const double* normal, double offset, double to
   swap_in();
   if (short_edge) merge_short_edges(tol);
   return empty() ? ClipResult::Empty : ClipResult::Cut;
-}
-
-std::int32_t ConvexPolyhedron::kept_corner(std::int32_t v, bool on_plane) {
-  std::int32_t& id = new_id_[static_cast<std::size_t>(v)];
-  if (id < 0) {
-    id = static_cast<std::int32_t>(next_corners_.size());
-    next_corners_.push_back(corners_[static_cast<std::size_t>(v)]);
-    next_on_plane_.push_back(on_plane);
-  }
-  return id;
 }
 
 std::int32_t ConvexPolyhedron::crossing_corner(std::int32_t a, std::int32_t b) {

@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "util/uninitialized_vector.hpp"
 #include "voronoi/half_space.hpp"
 
 namespace drange::cells {
@@ -75,13 +76,17 @@ class ConvexPolyhedron {
   void swap_in();
 
   std::vector<Corner> corners_;
-  std::vector<std::int32_t> face_start_{0}, faces_;
+  // faces_ and next_faces_ leave new entries unset: clip() makes room for a face's most
+  // corners, writes them and trims the rest.
+  std::vector<std::int32_t> face_start_{0};
+  util::UninitializedVector<std::int32_t> faces_;
   double radius_ = 0;  // max_norm(corners_)
 
   // The polyhedron being built by clip() and merge_short_edges(), and their scratch space.
   std::vector<Corner> next_corners_;
   std::vector<char> next_on_plane_;
-  std::vector<std::int32_t> next_face_start_, next_faces_;
+  std::vector<std::int32_t> next_face_start_;
+  util::UninitializedVector<std::int32_t> next_faces_;
   std::vector<double> distance_;
   std::vector<Side> side_;
   std::vector<std::int32_t> new_id_;
