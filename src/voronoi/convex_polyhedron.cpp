@@ -59,7 +59,9 @@ ClipResult ConvexPolyhedron::clip(const double* normal, double offset, double to
   next_corners_.clear();
   next_on_plane_.clear();
   next_face_start_.assign(1, 0);
-  next_faces_.clear();
+  // Room for every face's most corners (each corner and a crossing after it), trimmed below.
+  next_faces_.resize(2 * faces_.size());
+  std::size_t used = 0;
   new_id_.assign(corners_.size(), -1);
   crossings_.clear();
   first_crossing_.assign(corners_.size(), -1);
@@ -75,11 +77,8 @@ ClipResult ConvexPolyhedron::clip(const double* normal, double offset, double to
     }
     if (!has_inside) continue;
     // A face with a corner inside keeps at least that corner and its two neighbours (or the
-    // crossing points next to it): 3 corners or more. It is written in place at the end of
-    // next_faces_, which has room for each corner and a crossing after it.
-    const std::size_t start = next_faces_.size();
-    next_faces_.resize(start + 2 * k);
-    std::int32_t* face = next_faces_.data() + start;
+    // crossing points next to it): 3 corners or more.
+    std::int32_t* face = next_faces_.data() + used;
     std::size_t size = 0;
     if (all_inside) {  // kept whole: no crossing, no corner on the plane
       for (std::size_t i = 0; i < k; ++i) face[size++] = kept_corner(row[i], false);
@@ -92,9 +91,10 @@ ClipResult ConvexPolyhedron::clip(const double* normal, double offset, double to
       }
       add_plane_edges(face, size);
     }
-    next_faces_.resize(start + size);
-    next_face_start_.push_back(static_cast<std::int32_t>(next_faces_.size()));
+    used += size;
+    next_face_start_.push_back(static_cast<std::int32_t>(used));
   }
+  next_faces_.resize(used);
   add_cap(normal);
   // Only edges on the plane can be short: an edge from a corner inside to a crossing point is
   // longer than that corner's distance to the plane, more than tol.

@@ -76,8 +76,8 @@ class ConvexPolyhedron {
   void swap_in();
 
   std::vector<Corner> corners_;
-  // faces_ and next_faces_ leave new entries unset: clip() makes room for a face's most
-  // corners, writes them and trims the rest.
+  // faces_ and next_faces_ leave new entries unset: clip() makes room for the most corners
+  // the faces can keep, writes them and trims the rest.
   std::vector<std::int32_t> face_start_{0};
   util::UninitializedVector<std::int32_t> faces_;
   double radius_ = 0;  // max_norm(corners_)
