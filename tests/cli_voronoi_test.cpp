@@ -680,9 +680,9 @@ TEST(CliVoronoiErrors, BoxNeedsSomewhereToPutTheCells) {
 TEST(CliVoronoiErrors, CellsNeedACellFormat) {
   TempDir dir;
   write_text(dir.file("p.txt"), kSquareWithCentre);
-  for (const std::string name : {"x.txt", "cells"}) {
+  for (const std::string name : {"x.dat", "cells"}) {
     expect_usage_error(dir, {"voronoi", dir.file("p.txt"), "--cells", dir.file(name)},
-                       "--cells: Qhull's layouts hold no clipped cells; name a .vtu, .off, .json or .npz file");
+                       "--cells: Qhull's layouts hold no clipped cells; name a .vtu, .off, .json, .npz or .txt file");
   }
   EXPECT_EQ(count_entries(dir.path()), 1u);
 }

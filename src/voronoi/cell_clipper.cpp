@@ -25,6 +25,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -35,44 +37,16 @@ namespace {
 
 constexpr double kRelativeTolerance = 1e-12;
 
-// Appends the clipped cell (coordinates relative to p) to the output.
-template <class Shape>
-void append_cell(const Shape& shape, const double* p, ClippedCells& out) {
-  const auto d = static_cast<std::size_t>(out.dim);
-  const std::size_t first = out.points.size() / d;
-  if (first + shape.num_corners() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-    throw UsageError("clip_cells: more than 2^31 corners in all the clipped cells");
-  // Back to absolute coordinates. Corners a rounding apart relative to p can become the same
-  // double once p is added (a cell far from the origin): they are merged into one, and a face
-  // edge or a whole face that this collapses is dropped.
-  std::vector<std::int32_t> index(shape.num_corners());
-  std::size_t added = 0;
-  for (std::size_t v = 0; v < shape.num_corners(); ++v) {
-    double corner[3];
-    for (std::size_t k = 0; k < d; ++k) corner[k] = p[k] + shape.corner(v)[k];
-    std::size_t same = 0;
-    while (same < added && !std::equal(corner, corner + d, out.points.begin() + static_cast<std::ptrdiff_t>((first + same) * d))) ++same;
-    if (same == added) {
-      out.points.insert(out.points.end(), corner, corner + d);
-      ++added;
-    }
-    index[v] = static_cast<std::int32_t>(first + same);
+// A hash of a corner's coordinates that equal coordinates share (-0 and +0 too).
+std::uint64_t corner_hash(const double* corner, std::size_t d) {
+  std::uint64_t hash = 0;
+  for (std::size_t k = 0; k < d; ++k) {
+    const double x = corner[k] + 0.0;  // -0 becomes +0
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    hash = (hash ^ bits) * 0x9E3779B97F4A7C15ull;
   }
-  for (std::size_t f = 0; f < shape.num_faces(); ++f) {
-    const std::size_t start = out.faces.values.size();
-    for (std::size_t i = 0; i < shape.face_size(f); ++i) {
-      const std::int32_t c = index[static_cast<std::size_t>(shape.face_corner(f, i))];
-      if (out.faces.values.size() == start || out.faces.values.back() != c) out.faces.values.push_back(c);
-    }
-    if (out.faces.values.size() - start > 1 && out.faces.values.back() == out.faces.values[start]) out.faces.values.pop_back();
-    if (out.faces.values.size() - start < 3) {
-      out.faces.values.resize(start);
-      continue;
-    }
-    out.faces.end_row();
-  }
-  out.cell_faces.push_back(static_cast<std::int64_t>(out.faces.size()));
-  out.volumes.push_back(shape.empty() ? 0.0 : shape.volume());
+  return hash ^ (hash >> 29);
 }
 
 }  // namespace
@@ -99,6 +73,57 @@ void CellClipper::append(std::size_t i, const std::int32_t* partners, std::size_
   const double* p = points_.point(i);
   if (points_.dim == 2) cut(polygon_, p, partners, count, out);
   else cut(polyhedron_, p, partners, count, out);
+}
+
+template <class Shape>
+void CellClipper::append_cell(const Shape& shape, const double* p, ClippedCells& out) {
+  const auto d = static_cast<std::size_t>(out.dim);
+  const std::size_t first = out.points.size() / d;
+  const std::size_t corners = shape.num_corners();
+  if (first + corners > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw UsageError("clip_cells: more than 2^31 corners in all the clipped cells");
+  // Back to absolute coordinates. Corners a rounding apart relative to p can become the same
+  // double once p is added (a cell far from the origin): they are merged into one, and a face
+  // edge or a whole face that this collapses is dropped. The corners added so far are found by
+  // a hash of their coordinates (slots_, open addressing): they are distinct, so a corner equals
+  // at most one of them.
+  std::size_t slots = 16;
+  while (slots < 2 * corners) slots *= 2;
+  slots_.assign(slots, -1);
+  index_.resize(corners);
+  std::int32_t added = 0;
+  for (std::size_t v = 0; v < corners; ++v) {
+    double corner[3];
+    for (std::size_t k = 0; k < d; ++k) corner[k] = p[k] + shape.corner(v)[k];
+    for (std::size_t s = corner_hash(corner, d) & (slots - 1);; s = (s + 1) & (slots - 1)) {
+      if (slots_[s] < 0) {
+        slots_[s] = added++;
+        out.points.insert(out.points.end(), corner, corner + d);
+        index_[v] = static_cast<std::int32_t>(first) + slots_[s];
+        break;
+      }
+      const double* other = out.points.data() + (first + static_cast<std::size_t>(slots_[s])) * d;
+      if (std::equal(corner, corner + d, other)) {
+        index_[v] = static_cast<std::int32_t>(first) + slots_[s];
+        break;
+      }
+    }
+  }
+  for (std::size_t f = 0; f < shape.num_faces(); ++f) {
+    const std::size_t start = out.faces.values.size();
+    for (std::size_t i = 0; i < shape.face_size(f); ++i) {
+      const std::int32_t c = index_[static_cast<std::size_t>(shape.face_corner(f, i))];
+      if (out.faces.values.size() == start || out.faces.values.back() != c) out.faces.values.push_back(c);
+    }
+    if (out.faces.values.size() - start > 1 && out.faces.values.back() == out.faces.values[start]) out.faces.values.pop_back();
+    if (out.faces.values.size() - start < 3) {
+      out.faces.values.resize(start);
+      continue;
+    }
+    out.faces.end_row();
+  }
+  out.cell_faces.push_back(static_cast<std::int64_t>(out.faces.size()));
+  out.volumes.push_back(shape.empty() ? 0.0 : shape.volume());
 }
 
 template <class Shape>

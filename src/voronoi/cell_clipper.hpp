@@ -34,6 +34,9 @@ class CellClipper {
  private:
   template <class Shape>
   void cut(Shape& shape, const double* p, const std::int32_t* partners, std::size_t count, ClippedCells& out);
+  // Appends the clipped shape (coordinates relative to p) to `out`.
+  template <class Shape>
+  void append_cell(const Shape& shape, const double* p, ClippedCells& out);
 
   // A bisector in the cell's relative coordinates: u . x <= offset, u a unit vector.
   struct Bisector {
@@ -46,6 +49,7 @@ class CellClipper {
   ConvexPolygon polygon_;
   ConvexPolyhedron polyhedron_;
   std::vector<Bisector> bisectors_;
+  std::vector<std::int32_t> slots_, index_;  // append_cell's
 };
 
 }  // namespace drange::cells
