@@ -5,13 +5,14 @@ Usage: python3 bench/clipped_cells.py DRANGE [--points N] [--runs R] [--dir DIR]
 
 Generates N uniform 3D points in the unit cube (`drange generate uniform N 3`, seed 1), writes
 them for voro++ as "id x y z" lines, and runs, R rounds interleaved, each command under
-`/usr/bin/time -f "%e %M"`:
+`/usr/bin/time -f "%e %U %M"`:
   drange voronoi POINTS --cells CELLS.txt --box 0,0,0,1,1,1 -q --threads 1
   drange voronoi POINTS --cells CELLS.txt --box 0,0,0,1,1,1 -q --threads 2
   voro++ -c '%i %v' -o 0 1 0 1 0 1 VORO_POINTS           (when voro++ is installed)
   drange voronoi POINTS --cells CELLS.vtu --box 0,0,0,1,1,1 -q -o /dev/null --threads 1
-Prints per command the minimum and median wall seconds and peak resident memory (MB), and
-checks that the text cells of 1 and 2 threads are the same bytes.
+Prints per command the minimum and median wall seconds, user seconds (all threads; on a machine
+shared with other work the wall time of a run depends on the cores it got) and peak resident
+memory (MB), and checks that the text cells of 1 and 2 threads are the same bytes.
 """
 import argparse
 import os
@@ -22,9 +23,9 @@ import tempfile
 
 
 def timed(command):
-    done = subprocess.run(["/usr/bin/time", "-f", "%e %M", *command], capture_output=True, text=True, check=True)
-    seconds, kilobytes = done.stderr.strip().splitlines()[-1].split()
-    return float(seconds), int(kilobytes) / 1024
+    done = subprocess.run(["/usr/bin/time", "-f", "%e %U %M", *command], capture_output=True, text=True, check=True)
+    seconds, user, kilobytes = done.stderr.strip().splitlines()[-1].split()
+    return float(seconds), float(user), int(kilobytes) / 1024
 
 
 def main():
@@ -56,12 +57,12 @@ def main():
             results[name].append(timed(command))
     same = open(os.path.join(directory, "c1.txt"), "rb").read() == open(os.path.join(directory, "c2.txt"), "rb").read()
     print(f"{args.points} uniform 3D points, {args.runs} runs; text cells of 1 and 2 threads the same bytes: {same}")
-    print("| command | seconds, min | seconds, median | peak MB, min | peak MB, median |")
-    print("|---|---|---|---|---|")
+    print("| command | wall s, min | wall s, median | user s, min | user s, median | peak MB, min | peak MB, median |")
+    print("|---|---|---|---|---|---|---|")
     for name, runs in results.items():
-        seconds = [s for s, _ in runs]
-        memory = [m for _, m in runs]
-        print(f"| {name} | {min(seconds):.2f} | {statistics.median(seconds):.2f} | {min(memory):.0f} | {statistics.median(memory):.0f} |")
+        wall, user, memory = ([run[i] for run in runs] for i in range(3))
+        print(f"| {name} | {min(wall):.2f} | {statistics.median(wall):.2f} | {min(user):.2f} | {statistics.median(user):.2f} "
+              f"| {min(memory):.0f} | {statistics.median(memory):.0f} |")
 
 
 if __name__ == "__main__":

@@ -135,7 +135,7 @@ struct CellStreamReport {
 // The cell of every distinct point clipped to the box (d = 2, 3), computed a batch of points
 // at a time from their Delaunay stars (delaunay/local_star.hpp) without the whole
 // triangulation or diagram: memory holds the input, its kd-tree, and per thread the stars of a
-// batch and the text of a few batches.
+// batch, a mark per point and the text of a few batches.
 // The cells are clip_cells' cells of the whole diagram, up to rounding: a cell is cut by the
 // bisectors of every Delaunay neighbour of its point, which include its ridge partners (the
 // others only touch the cell), in another order when offsets tie. Each distinct point has one

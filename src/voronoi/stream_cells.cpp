@@ -38,8 +38,8 @@ namespace drange {
 namespace {
 
 // Points per batch: at least kMinBatch, so that the simplices found twice (those reaching into
-// the next batch) stay a small part of the work, and at least 1/kMaxBatches of the points, because each StarWrapper::stars call sets
-// up marks for every point.
+// the next batch) stay a small part of the work, and at least 1/kMaxBatches of the points,
+// because each StarWrapper::stars call sets up marks for every point.
 constexpr std::size_t kMinBatch = 16384;
 constexpr std::size_t kMaxBatches = 256;
 // Batches computed ahead of the one being written, per thread.
