@@ -128,35 +128,32 @@ class BatchWorker {
     wrapper_.stars(wanted_, rows_, counters_, hull_);
     star_simplices_ += rows_.size() / width;
 
-    // Each batch point's neighbours, with repeats, grouped by point (a counting sort):
-    // neighbours_[offsets_[i] .. offsets_[i+1]) for the batch's point i.
+    // Each batch point's simplices, grouped by point (a counting sort):
+    // incident_[offsets_[i] .. offsets_[i+1]) are the rows holding the batch's point i.
     const auto in_batch = [&](std::int32_t v) { return v >= begin && v < end; };
     offsets_.assign(count + 1, 0);
     for (const std::int32_t v : rows_)
-      if (in_batch(v)) offsets_[static_cast<std::size_t>(v - begin) + 1] += width - 1;
+      if (in_batch(v)) ++offsets_[static_cast<std::size_t>(v - begin) + 1];
     for (std::size_t i = 0; i < count; ++i) offsets_[i + 1] += offsets_[i];
-    neighbours_.resize(offsets_[count]);
+    incident_.resize(offsets_[count]);
     next_.assign(offsets_.begin(), offsets_.end() - 1);
-    for (std::size_t r = 0; r < rows_.size(); r += width)
-      for (std::size_t a = 0; a < width; ++a) {
-        const std::int32_t v = rows_[r + a];
-        if (!in_batch(v)) continue;
-        std::size_t& at = next_[static_cast<std::size_t>(v - begin)];
-        for (std::size_t b = 0; b < width; ++b)
-          if (b != a) neighbours_[at++] = rows_[r + b];
-      }
+    for (std::size_t at = 0; at < rows_.size(); ++at)
+      if (in_batch(rows_[at]))
+        incident_[next_[static_cast<std::size_t>(rows_[at] - begin)]++] = static_cast<std::int32_t>(at / width);
 
     std::string text;
     for (std::size_t i = 0; i < count; ++i) {
       const auto p = static_cast<std::int32_t>(begin + static_cast<std::int32_t>(i));
       // Each neighbour once (seen_[v] == p: v is already a partner of p), as an input index.
       partners_.clear();
-      for (std::size_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
-        const std::int32_t v = neighbours_[k];
-        if (seen_[static_cast<std::size_t>(v)] == p) continue;
-        seen_[static_cast<std::size_t>(v)] = p;
-        partners_.push_back(points_.input_index[static_cast<std::size_t>(v)]);
-      }
+      seen_[static_cast<std::size_t>(p)] = p;
+      for (std::size_t k = offsets_[i]; k < offsets_[i + 1]; ++k)
+        for (std::size_t a = 0; a < width; ++a) {
+          const std::int32_t v = rows_[static_cast<std::size_t>(incident_[k]) * width + a];
+          if (seen_[static_cast<std::size_t>(v)] == p) continue;
+          seen_[static_cast<std::size_t>(v)] = p;
+          partners_.push_back(points_.input_index[static_cast<std::size_t>(v)]);
+        }
       const std::int32_t id = points_.input_index[static_cast<std::size_t>(p)];
       clear_cells(cell_);
       clipper_.append(static_cast<std::size_t>(id), partners_.data(), partners_.size(), cell_);
@@ -173,7 +170,7 @@ class BatchWorker {
   engine::StarWrapper wrapper_;
   cells::CellClipper clipper_;
   engine::SearchCounters counters_;
-  std::vector<std::int32_t> wanted_, rows_, hull_, neighbours_, partners_;
+  std::vector<std::int32_t> wanted_, rows_, hull_, incident_, partners_;
   std::vector<std::size_t> offsets_, next_;
   std::vector<std::int32_t> seen_;  // by engine id: the last point that took it as a partner
   std::size_t star_simplices_ = 0;
