@@ -40,9 +40,9 @@ void ConvexPolyhedron::clear() {
 inline std::int32_t ConvexPolyhedron::kept_corner(std::int32_t v, bool on_plane) {
   std::int32_t& id = new_id_[static_cast<std::size_t>(v)];
   if (id < 0) {
-    id = static_cast<std::int32_t>(next_corners_.size());
-    next_corners_.push_back(corners_[static_cast<std::size_t>(v)]);
-    next_on_plane_.push_back(on_plane);
+    id = static_cast<std::int32_t>(next_count_);
+    next_corners_[next_count_] = corners_[static_cast<std::size_t>(v)];
+    next_on_plane_[next_count_++] = on_plane;
   }
   return id;
 }
@@ -56,8 +56,8 @@ ClipResult ConvexPolyhedron::clip(const double* normal, double offset, double to
     clear();
     return ClipResult::Empty;
   }
-  next_corners_.clear();
-  next_on_plane_.clear();
+  // Each kept corner and at most one crossing point per edge of a face.
+  begin_corners(corners_.size() + faces_.size());
   next_face_start_.assign(1, 0);
   // Room for every face's most corners (each corner and a crossing after it), trimmed below.
   next_faces_.resize(2 * faces_.size());
@@ -112,10 +112,10 @@ std::int32_t ConvexPolyhedron::crossing_corner(std::int32_t a, std::int32_t b) {
   // The crossings made so far on the edges of corner `in` (a corner has few edges).
   for (std::int32_t c = first_crossing_[in]; c >= 0; c = crossings_[static_cast<std::size_t>(c)].next)
     if (crossings_[static_cast<std::size_t>(c)].out == out) return crossings_[static_cast<std::size_t>(c)].id;
-  const auto id = static_cast<std::int32_t>(next_corners_.size());
+  const auto id = static_cast<std::int32_t>(next_count_);
   const auto o = static_cast<std::size_t>(out);
-  next_corners_.push_back(crossing_point(corners_[in], distance_[in], corners_[o], distance_[o]));
-  next_on_plane_.push_back(true);
+  next_corners_[next_count_] = crossing_point(corners_[in], distance_[in], corners_[o], distance_[o]);
+  next_on_plane_[next_count_++] = true;
   crossings_.push_back({out, id, first_crossing_[in]});
   first_crossing_[in] = static_cast<std::int32_t>(crossings_.size() - 1);
   return id;
@@ -194,7 +194,15 @@ void ConvexPolyhedron::end_face() {
   next_face_start_.push_back(static_cast<std::int32_t>(next_faces_.size()));
 }
 
+void ConvexPolyhedron::begin_corners(std::size_t room) {
+  next_count_ = 0;
+  next_corners_.resize(room);
+  next_on_plane_.resize(room);
+}
+
 void ConvexPolyhedron::swap_in() {
+  next_corners_.resize(next_count_);
+  next_on_plane_.resize(next_count_);
   corners_.swap(next_corners_);
   face_start_.swap(next_face_start_);
   faces_.swap(next_faces_);
@@ -210,8 +218,7 @@ void ConvexPolyhedron::merge_short_edges(double tol) {
       if (distance(corners_[static_cast<std::size_t>(a)], corners_[static_cast<std::size_t>(b)]) <= tol)
         same.unite(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
     }
-  next_corners_.clear();
-  next_on_plane_.clear();
+  begin_corners(corners_.size());
   next_face_start_.assign(1, 0);
   next_faces_.clear();
   new_id_.assign(corners_.size(), -1);

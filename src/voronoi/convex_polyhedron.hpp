@@ -66,6 +66,8 @@ class ConvexPolyhedron {
   // Merges the corners joined by an edge no longer than tol and drops the faces left with
   // fewer than 3 corners.
   void merge_short_edges(double tol);
+  // Starts the corners of the polyhedron being built, with room for `room` of them.
+  void begin_corners(std::size_t room);
   // Closes the polyhedron being built with its face on the plane.
   void add_cap(const double* normal);
   bool chain_cap();
@@ -75,7 +77,9 @@ class ConvexPolyhedron {
   // Makes the polyhedron being built the current one.
   void swap_in();
 
-  std::vector<Corner> corners_;
+  // The corner arrays leave new entries unset: a clip makes room for the most corners it can
+  // make, writes them (next_count_) and trims the rest.
+  util::UninitializedVector<Corner> corners_;
   // faces_ and next_faces_ leave new entries unset: clip() makes room for the most corners
   // the faces can keep, writes them and trims the rest.
   std::vector<std::int32_t> face_start_{0};
@@ -83,8 +87,9 @@ class ConvexPolyhedron {
   double radius_ = 0;  // max_norm(corners_)
 
   // The polyhedron being built by clip() and merge_short_edges(), and their scratch space.
-  std::vector<Corner> next_corners_;
-  std::vector<char> next_on_plane_;
+  util::UninitializedVector<Corner> next_corners_;
+  util::UninitializedVector<char> next_on_plane_;
+  std::size_t next_count_ = 0;  // corners made in next_corners_ and next_on_plane_
   std::vector<std::int32_t> next_face_start_;
   util::UninitializedVector<std::int32_t> next_faces_;
   std::vector<double> distance_;

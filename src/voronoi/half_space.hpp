@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
 #include <vector>
 
 namespace drange::cells {
@@ -29,9 +30,10 @@ struct SidesPresent {
 };
 
 // Fills the signed distance and the side of every corner.
-template <std::size_t D>
-SidesPresent classify(const std::vector<std::array<double, D>>& corners, const double* normal, double offset,
-                      double tol, std::vector<double>& distance, std::vector<Side>& side) {
+template <class Corners>
+SidesPresent classify(const Corners& corners, const double* normal, double offset, double tol,
+                      std::vector<double>& distance, std::vector<Side>& side) {
+  constexpr std::size_t D = std::tuple_size<typename Corners::value_type>::value;
   distance.resize(corners.size());
   side.resize(corners.size());
   SidesPresent present;
@@ -65,8 +67,9 @@ std::array<double, D> crossing_point(const std::array<double, D>& in, double d_i
 
 // The largest distance of a corner from the origin (the cell's point): a boundary farther
 // away than this cannot cut the shape.
-template <std::size_t D>
-double max_norm(const std::vector<std::array<double, D>>& corners) {
+template <class Corners>
+double max_norm(const Corners& corners) {
+  constexpr std::size_t D = std::tuple_size<typename Corners::value_type>::value;
   double largest = 0;
   for (const auto& x : corners) {
     double sum = 0;
