@@ -17,6 +17,12 @@ Corner cross(const Corner& a, const Corner& b) {
 }
 double dot(const Corner& a, const Corner& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
+// Sets values[0 .. n) to -1. The array only grows, so that its size needs no call per clip.
+void minus_ones(std::vector<std::int32_t>& values, std::size_t n) {
+  if (values.size() < n) values.resize(n);
+  std::fill_n(values.begin(), n, -1);
+}
+
 }  // namespace
 
 void ConvexPolyhedron::set_box(const double* lower, const double* upper) {
@@ -62,9 +68,9 @@ ClipResult ConvexPolyhedron::clip(const double* normal, double offset, double to
   // Room for every face's most corners (each corner and a crossing after it), trimmed below.
   next_faces_.resize(2 * faces_.size());
   std::size_t used = 0;
-  new_id_.assign(corners_.size(), -1);
+  minus_ones(new_id_, corners_.size());
   crossings_.clear();
-  first_crossing_.assign(corners_.size(), -1);
+  minus_ones(first_crossing_, corners_.size());
   plane_edges_.clear();
   for (std::size_t f = 0; f < num_faces(); ++f) {
     const std::size_t k = face_size(f);

@@ -29,13 +29,16 @@ struct SidesPresent {
   bool outside = false;
 };
 
-// Fills the signed distance and the side of every corner.
+// Fills the signed distance and the side of every corner: entries 0 .. corners.size() - 1 (the
+// arrays only grow, so that their sizes need no call per clip).
 template <class Corners>
 SidesPresent classify(const Corners& corners, const double* normal, double offset, double tol,
                       std::vector<double>& distance, std::vector<Side>& side) {
   constexpr std::size_t D = std::tuple_size<typename Corners::value_type>::value;
-  distance.resize(corners.size());
-  side.resize(corners.size());
+  if (distance.size() < corners.size()) {
+    distance.resize(corners.size());
+    side.resize(corners.size());
+  }
   SidesPresent present;
   for (std::size_t v = 0; v < corners.size(); ++v) {
     double dot = 0;
