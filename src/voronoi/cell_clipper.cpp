@@ -91,48 +91,37 @@ void CellClipper::append_cell(const Shape& shape, const double* p, ClippedCells&
   while (slots < 2 * corners) slots *= 2;
   slots_.assign(slots, -1);
   index_.resize(corners);
-  // Room for every corner, trimmed to those added.
-  const std::size_t base = out.points.size();
-  out.points.resize(base + corners * d);
-  double* const stored = out.points.data() + base;
   std::int32_t added = 0;
   for (std::size_t v = 0; v < corners; ++v) {
-    double* corner = stored + static_cast<std::size_t>(added) * d;  // where it goes if it is new
+    double corner[3];
     for (std::size_t k = 0; k < d; ++k) corner[k] = p[k] + shape.corner(v)[k];
     for (std::size_t s = corner_hash(corner, d) & (slots - 1);; s = (s + 1) & (slots - 1)) {
       if (slots_[s] < 0) {
         slots_[s] = added++;
+        out.points.insert(out.points.end(), corner, corner + d);
         index_[v] = static_cast<std::int32_t>(first) + slots_[s];
         break;
       }
-      if (std::equal(corner, corner + d, stored + static_cast<std::size_t>(slots_[s]) * d)) {
+      const double* other = out.points.data() + (first + static_cast<std::size_t>(slots_[s])) * d;
+      if (std::equal(corner, corner + d, other)) {
         index_[v] = static_cast<std::int32_t>(first) + slots_[s];
         break;
       }
     }
   }
-  out.points.resize(base + static_cast<std::size_t>(added) * d);
-  // The faces, written into room for all their corners: a corner repeated next to itself (two
-  // merged ones) is written once, and a face left with fewer than 3 corners is dropped.
-  std::size_t entries = 0;
-  for (std::size_t f = 0; f < shape.num_faces(); ++f) entries += shape.face_size(f);
-  std::size_t used = out.faces.values.size();
-  out.faces.values.resize(used + entries);
-  std::int32_t* const values = out.faces.values.data();
   for (std::size_t f = 0; f < shape.num_faces(); ++f) {
-    const std::size_t start = used;
+    const std::size_t start = out.faces.values.size();
     for (std::size_t i = 0; i < shape.face_size(f); ++i) {
       const std::int32_t c = index_[static_cast<std::size_t>(shape.face_corner(f, i))];
-      if (used == start || values[used - 1] != c) values[used++] = c;
+      if (out.faces.values.size() == start || out.faces.values.back() != c) out.faces.values.push_back(c);
     }
-    if (used - start > 1 && values[used - 1] == values[start]) --used;
-    if (used - start < 3) {
-      used = start;
+    if (out.faces.values.size() - start > 1 && out.faces.values.back() == out.faces.values[start]) out.faces.values.pop_back();
+    if (out.faces.values.size() - start < 3) {
+      out.faces.values.resize(start);
       continue;
     }
-    out.faces.offsets.push_back(static_cast<std::int64_t>(used));
+    out.faces.end_row();
   }
-  out.faces.values.resize(used);
   out.cell_faces.push_back(static_cast<std::int64_t>(out.faces.size()));
   out.volumes.push_back(shape.empty() ? 0.0 : shape.volume());
 }
