@@ -28,12 +28,20 @@ StarWrapper::StarWrapper(const PointStore& points, FacetSearch& search, const Fi
       facets_(static_cast<std::size_t>((points.dim + 1) * points.dim)),
       sides_(static_cast<std::size_t>(points.dim + 1)) {
   SearchCounters ignored;
-  current_ = FoundSimplex{first.ids, first.sigma, search_.find_apex(first.ids.data(), first.sigma, ignored)};
+  current_ = found_simplex(first.ids.data(), first.sigma, search_.find_apex(first.ids.data(), first.sigma, ignored));
   if (current_.apex < 0) throw InternalError("delaunay stars: the first facet has no simplex on its inner side");
 }
 
+FoundSimplex StarWrapper::found_simplex(const std::int32_t* facet, int sigma, std::int32_t apex) const {
+  FoundSimplex s;
+  std::copy_n(facet, d_, s.facet.begin());
+  s.sigma = sigma;
+  s.apex = apex;
+  return s;
+}
+
 void StarWrapper::vertices_of(const FoundSimplex& s, std::int32_t* out) const {
-  std::copy(s.facet.begin(), s.facet.end(), out);
+  std::copy_n(s.facet.begin(), d_, out);
   if (s.sigma < 0) std::swap(out[0], out[1]);
   out[d_] = s.apex;
 }
@@ -44,7 +52,7 @@ void StarWrapper::facets_of(const FoundSimplex& s) {
   simplex_other_facets(s.facet.data(), d_, s.apex, s.sigma < 0, facets_.data(), open_side.data());
   std::copy(open_side.begin(), open_side.end(), sides_.begin());
   // Facet d omits the apex: the facet the simplex was found from, whose open side held the apex.
-  std::copy(s.facet.begin(), s.facet.end(), facets_.begin() + static_cast<std::ptrdiff_t>(d * d));
+  std::copy_n(s.facet.begin(), d_, facets_.begin() + static_cast<std::ptrdiff_t>(d * d));
   sides_[d] = -s.sigma;
 }
 
@@ -68,7 +76,7 @@ void StarWrapper::walk_to(std::int32_t p, SearchCounters& counters) {
       const std::int32_t apex = search_.find_apex(facet, sides_[f], counters);
       // p lies in the hull, never strictly beyond a hull facet.
       if (apex < 0) throw InternalError("delaunay stars: the walk to point " + std::to_string(p) + " left the hull");
-      current_ = FoundSimplex{std::vector<std::int32_t>(facet, facet + d), sides_[f], apex};
+      current_ = found_simplex(facet, sides_[f], apex);
       crossed = true;
     }
     if (!crossed)
@@ -78,7 +86,7 @@ void StarWrapper::walk_to(std::int32_t p, SearchCounters& counters) {
 }
 
 void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std::int32_t>& rows,
-                        SearchCounters& counters, std::vector<std::int32_t>& hull_facets) {
+                        SearchCounters& counters, std::vector<std::int32_t>& hull_facets, std::vector<std::int32_t>* links) {
   const auto d = static_cast<std::size_t>(d_);
   std::vector<char> is_wanted(static_cast<std::size_t>(points_.size), 0), covered(is_wanted.size(), 0);
   for (const std::int32_t p : wanted) is_wanted[static_cast<std::size_t>(p)] = 1;
@@ -86,44 +94,63 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
   // and the queue of those to search, least smallest vertex id first: the whole construction's
   // spatial order (ids follow the kd-tree, so consecutive searches read nearby nodes). One
   // table for every start: a facet through a wanted point is reached from both sides within
-  // one wrapping.
+  // one wrapping. Both know the facet's first side (row, facet) for the links.
   FacetTable open(d_);
   SpatialFacetQueue queue(d_, points_.size, kStarBlockShift);
   std::vector<std::int32_t> vertices(d + 1), facet(d);
-  // Records a simplex; `searched`: the facet it was found from, closed already.
-  const auto record = [&](const FoundSimplex& s, bool searched) {
+  const auto link = [&](FacetOwner a, FacetOwner b) {
+    (*links)[static_cast<std::size_t>(a.simplex) * (d + 1) + static_cast<std::size_t>(a.face)] = b.simplex;
+    (*links)[static_cast<std::size_t>(b.simplex) * (d + 1) + static_cast<std::size_t>(b.face)] = a.simplex;
+  };
+  // Records a simplex; `from`: the facet it was found from (closed already), with its first side.
+  const auto record = [&](const FoundSimplex& s, const FacetOwner* from) {
+    const auto row = static_cast<std::int32_t>(rows.size() / (d + 1));
     vertices_of(s, vertices.data());
     rows.insert(rows.end(), vertices.begin(), vertices.end());
+    if (links) links->resize(rows.size(), kNotOpened);
     for (const std::int32_t v : vertices) covered[static_cast<std::size_t>(v)] = 1;
     facets_of(s);
     for (std::size_t f = 0; f <= d; ++f) {
-      if (searched && f == d) continue;
+      const FacetOwner here{row, static_cast<std::int32_t>(f)};
+      if (from && f == d) {
+        if (links) link(*from, here);
+        continue;
+      }
       const std::int32_t* ids = &facets_[f * d];
       if (std::none_of(ids, ids + d, [&](std::int32_t v) { return is_wanted[static_cast<std::size_t>(v)] != 0; }))
         continue;  // it leads out of the stars
       const std::uint32_t hash = facet_hash(ids, d_);
       FacetOwner other{};
-      if (open.close_or_open(ids, hash, FacetOwner{0, 0}, &other)) continue;  // both sides found
-      queue.push(ids, hash, FacetOwner{0, 0}, sides_[f], -1);
+      if (open.close_or_open(ids, hash, here, &other)) {  // both sides found
+        if (links) link(other, here);
+        continue;
+      }
+      queue.push(ids, hash, here, sides_[f], -1);
     }
   };
   std::vector<std::int32_t> order(wanted);
   std::sort(order.begin(), order.end());
   FacetInfo info{};
+  // More simplices than n points can have: a wrong apex made them overlap (simplex_estimate.hpp).
+  const std::size_t limit = simplex_upper_bound(d_, static_cast<std::size_t>(points_.size)) * (d + 1);
   for (const std::int32_t p : order) {
     if (covered[static_cast<std::size_t>(p)]) continue;
     walk_to(p, counters);
-    record(current_, false);
+    record(current_, nullptr);
     while (!queue.empty()) {
+      max_open_facets_ = std::max(max_open_facets_, open.size());
+      if (rows.size() > limit) throw InternalError("delaunay stars: more simplices than the points can have");
       queue.pop(facet.data(), info);
       // Closed meanwhile (its other simplex found from another facet): nothing to search.
       if (!open.remove(facet.data(), info.hash)) continue;
       const std::int32_t apex = search_.find_apex(facet.data(), info.sigma, counters);
       if (apex < 0) {
         hull_facets.insert(hull_facets.end(), facet.begin(), facet.end());
+        if (links)
+          (*links)[static_cast<std::size_t>(info.owner.simplex) * (d + 1) + static_cast<std::size_t>(info.owner.face)] = kHullSide;
         continue;
       }
-      record(FoundSimplex{facet, info.sigma, apex}, true);
+      record(found_simplex(facet.data(), info.sigma, apex), &info.owner);
     }
   }
 }

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "delaunay/algorithm_choice.hpp"
+#include "delaunay/block_search.hpp"
 #include "delaunay/derived_facets.hpp"
 #include "delaunay/facet_queue.hpp"
 #include "delaunay/facet_search.hpp"
@@ -84,6 +85,14 @@ bool spatial_order(FacetOrder order, int d) {
 // take() reads: on a large frontier each lookup is a miss, and about half the facets popped
 // were closed while they waited, so their turn is only that lookup.
 constexpr std::uint64_t kPrefetchAhead = 4;
+
+// The blocks of the direct search: one per thread, none with fewer than kMinBlockPoints points
+// (a block's walk from the first facet and its boundary cost more than a small block saves).
+// The output does not depend on the count (block_search.hpp).
+constexpr std::int32_t kMinBlockPoints = 4096;
+int block_count(const engine::Team& team, std::int32_t points) {
+  return static_cast<int>(std::max<std::int32_t>(1, std::min<std::int32_t>(team.threads(), points / kMinBlockPoints)));
+}
 
 // One thread, FIFO: each facet searched when its turn comes, taken out of the queue then.
 // kBudgeted: the run stops at SearchTotals::budget (the choice's probe); a template argument,
@@ -265,6 +274,12 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
     totals.counters.calls = counters.walk_steps;
     totals.counters.points_tested = counters.conflict_tests;
     stats.debug.unfiltered_tests = counters.unfiltered_tests;
+  } else if (work_budget == 0) {
+    const engine::BlockSearchTotals blocks =
+        engine::search_in_blocks(points, first, search_options, team, block_count(team, points.size), options.compute_neighbors, result);
+    totals.counters = blocks.counters;
+    stats.hull_facets = blocks.hull_facets;
+    stats.debug.max_open_facets = blocks.max_open_facets;
   } else if (spatial_order(search_options.facet_order, d)) {
     Frontier<engine::SpatialFacetQueue> frontier(d, points.size, result, options.progress,
                                                  engine::SpatialFacetQueue(d, points.size, kSpatialBlockShift),

@@ -1,0 +1,237 @@
+// delaunay/block_search.cpp: the blocks' wrappings, their canonical order and their join
+// (block_search.hpp says why the output is the same for every cut).
+#include "delaunay/block_search.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+#include "delaunay/local_star.hpp"
+#include "delaunay/simplex_estimate.hpp"
+
+namespace drange::engine {
+namespace {
+
+// In a block's links: the facet's other side is not among the block's own simplices (owned by
+// another block, or not found by this one); matched after the join.
+constexpr std::int32_t kElsewhere = -3;
+
+// One block's share of the result, in engine ids.
+struct Block {
+  std::int32_t begin = 0, end = 0;  // its points: ids begin..end-1
+  std::vector<std::int32_t> rows;   // its simplices, canonical, in canonical order
+  // Per row and facet (opposite the vertex at that place): the row across, -1 on the hull, or
+  // kElsewhere. Empty without neighbours.
+  std::vector<std::int32_t> links;
+  SearchCounters counters;
+  std::size_t hull_facets = 0, max_open_facets = 0;
+};
+
+// Puts the w ids of `row` in canonical form: increasing, the first two exchanged when the
+// sort's permutation is odd (the row was positively oriented, and so stays). place[k] gets the
+// new place of the id that was at place k.
+void canonicalise(std::int32_t* row, int w, int* place) {
+  int from[16];  // from[k]: the old place of the id now at place k (w <= 12)
+  for (int k = 0; k < w; ++k) from[k] = k;
+  bool odd = false;
+  for (int i = 1; i < w; ++i)
+    for (int k = i; k > 0 && row[k - 1] > row[k]; --k) {
+      std::swap(row[k - 1], row[k]);
+      std::swap(from[k - 1], from[k]);
+      odd = !odd;
+    }
+  if (odd) {
+    std::swap(row[0], row[1]);
+    std::swap(from[0], from[1]);
+  }
+  for (int k = 0; k < w; ++k) place[from[k]] = k;
+}
+
+// Whether canonical row a comes before canonical row b: their sorted ids, compared in order (a
+// canonical row is sorted but for its first two ids).
+bool canonical_before(const std::int32_t* a, const std::int32_t* b, int w) {
+  const std::int32_t a0 = std::min(a[0], a[1]), b0 = std::min(b[0], b[1]);
+  if (a0 != b0) return a0 < b0;
+  const std::int32_t a1 = std::max(a[0], a[1]), b1 = std::max(b[0], b[1]);
+  if (a1 != b1) return a1 < b1;
+  return std::lexicographical_compare(a + 2, a + w, b + 2, b + w);
+}
+
+// Wraps the stars of block.begin..end-1 and keeps, in canonical order, the simplices it owns.
+void search_block(const PointStore& points, const FirstFacet& first, const SearchOptions& options, bool neighbors,
+                  Block& block) {
+  const int w = points.dim + 1;
+  const auto width = static_cast<std::size_t>(w);
+  std::vector<std::int32_t> found, links, hull;
+  // Room up front (simplex_estimate.hpp): growing by doubling would copy the rows again.
+  const std::size_t room = reservable_simplices(
+      expected_simplices(points.dim, static_cast<std::size_t>(block.end - block.begin)) * 9 / 8, width, neighbors ? 4 : 2);
+  found.reserve(room * width);
+  if (neighbors) links.reserve(room * width);
+  {
+    FacetSearch search(points, options);
+    StarWrapper wrapper(points, search, first);
+    std::vector<std::int32_t> wanted(static_cast<std::size_t>(block.end - block.begin));
+    std::iota(wanted.begin(), wanted.end(), block.begin);
+    wrapper.stars(wanted, found, block.counters, hull, neighbors ? &links : nullptr);
+    block.max_open_facets = wrapper.max_open_facets();
+  }
+  const auto mine = [&](std::int32_t id) { return id >= block.begin && id < block.end; };
+  // A hull facet is counted by the block of its smallest id, which wrapped it (facets sorted).
+  for (std::size_t f = 0; f < hull.size(); f += width - 1) block.hull_facets += mine(hull[f]) ? 1 : 0;
+
+  // Canonical rows; the owned ones counted by smallest id, for a counting sort.
+  const std::size_t rows = found.size() / width;
+  std::vector<signed char> places(neighbors ? found.size() : 0);
+  std::vector<std::int32_t> start(static_cast<std::size_t>(block.end - block.begin) + 1, 0);
+  for (std::size_t r = 0; r < rows; ++r) {
+    std::int32_t* row = &found[r * width];
+    int place[16];
+    canonicalise(row, w, place);
+    if (neighbors)
+      for (int k = 0; k < w; ++k) places[r * width + static_cast<std::size_t>(k)] = static_cast<signed char>(place[k]);
+    const std::int32_t least = std::min(row[0], row[1]);
+    if (mine(least)) ++start[static_cast<std::size_t>(least - block.begin) + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  const auto owned = static_cast<std::size_t>(start.back());
+  // order[i]: the found row that becomes row i; the rows not owned follow the owned ones.
+  std::vector<std::int32_t> order(rows);
+  for (std::size_t r = 0, other = owned; r < rows; ++r) {
+    const std::int32_t least = std::min(found[r * width], found[r * width + 1]);
+    const std::size_t i = mine(least) ? static_cast<std::size_t>(start[static_cast<std::size_t>(least - block.begin)]++) : other++;
+    order[i] = static_cast<std::int32_t>(r);
+  }
+  // start[k] now ends the rows of smallest id begin + k: a few rows each, sorted by insertion.
+  const auto before = [&](std::int32_t a, std::int32_t b) {
+    return canonical_before(&found[static_cast<std::size_t>(a) * width], &found[static_cast<std::size_t>(b) * width], w);
+  };
+  for (std::size_t k = 0, from = 0; k + 1 < start.size(); ++k) {
+    const auto to = static_cast<std::size_t>(start[k]);
+    for (std::size_t i = from + 1; i < to; ++i)
+      for (std::size_t j = i; j > from && before(order[j], order[j - 1]); --j) std::swap(order[j], order[j - 1]);
+    from = to;
+  }
+  std::vector<std::int32_t>().swap(start);
+  // dest[r]: the row found row r becomes (order's inverse, in order's place).
+  std::vector<std::int32_t>& dest = order;
+  {
+    std::vector<std::int32_t> inverse(rows);
+    for (std::size_t i = 0; i < rows; ++i) inverse[static_cast<std::size_t>(order[i])] = static_cast<std::int32_t>(i);
+    dest.swap(inverse);
+  }
+  if (neighbors) {
+    // Each link to its final row and its facet to its canonical place, still in found order.
+    std::vector<std::int32_t> link(width);
+    for (std::size_t r = 0; r < rows; ++r) {
+      std::int32_t* at = &links[r * width];
+      for (std::size_t k = 0; k < width; ++k) {
+        const std::int32_t across = at[k];
+        std::int32_t value = kElsewhere;
+        if (across == StarWrapper::kHullSide) value = -1;
+        else if (across >= 0 && static_cast<std::size_t>(dest[static_cast<std::size_t>(across)]) < owned)
+          value = dest[static_cast<std::size_t>(across)];
+        link[static_cast<std::size_t>(places[r * width + k])] = value;
+      }
+      std::copy(link.begin(), link.end(), at);
+    }
+    std::vector<signed char>().swap(places);
+  }
+  // The permutation applied in place, cycle by cycle: no second array of rows at the peak.
+  for (std::size_t i = 0; i < rows; ++i)
+    while (static_cast<std::size_t>(dest[i]) != i) {
+      const auto j = static_cast<std::size_t>(dest[i]);
+      std::swap_ranges(&found[i * width], &found[i * width] + width, &found[j * width]);
+      if (neighbors) std::swap_ranges(&links[i * width], &links[i * width] + width, &links[j * width]);
+      std::swap(dest[i], dest[j]);
+    }
+  found.resize(owned * width);
+  block.rows = std::move(found);
+  if (neighbors) {
+    links.resize(owned * width);
+    block.links = std::move(links);
+  }
+}
+
+// Links the facets that no block could link alone (`pending`: row * w + facet, in the joined
+// result): the two sides of a facet have the same sorted ids; one side alone is the hull.
+void match_pending(const std::vector<std::size_t>& pending, int w, Triangulation& result) {
+  const auto width = static_cast<std::size_t>(w), d = width - 1;
+  std::vector<std::int32_t> keys(pending.size() * d);
+  for (std::size_t i = 0; i < pending.size(); ++i) {
+    const std::int32_t* row = &result.simplices[pending[i] / width * width];
+    const std::size_t omit = pending[i] % width;
+    std::int32_t* key = &keys[i * d];
+    for (std::size_t k = 0, j = 0; k < width; ++k)
+      if (k != omit) key[j++] = row[k];
+    std::sort(key, key + d);
+  }
+  std::vector<std::size_t> order(pending.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  const auto key = [&](std::size_t i) { return keys.begin() + static_cast<std::ptrdiff_t>(i * d); };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::lexicographical_compare(key(a), key(a) + static_cast<std::ptrdiff_t>(d), key(b), key(b) + static_cast<std::ptrdiff_t>(d));
+  });
+  for (const std::size_t at : pending) result.neighbors[at] = -1;
+  for (std::size_t i = 0; i + 1 < order.size(); ++i) {
+    const std::size_t a = order[i], b = order[i + 1];
+    if (!std::equal(key(a), key(a) + static_cast<std::ptrdiff_t>(d), key(b))) continue;
+    result.neighbors[pending[a]] = static_cast<std::int32_t>(pending[b] / width);
+    result.neighbors[pending[b]] = static_cast<std::int32_t>(pending[a] / width);
+    ++i;
+  }
+}
+
+}  // namespace
+
+BlockSearchTotals search_in_blocks(const PointStore& points, const FirstFacet& first, const SearchOptions& options,
+                                   Team& team, int blocks, bool neighbors, Triangulation& result) {
+  const int w = points.dim + 1;
+  const auto width = static_cast<std::size_t>(w);
+  std::vector<Block> parts(static_cast<std::size_t>(std::max(1, blocks)));
+  for (std::size_t b = 0; b < parts.size(); ++b) {
+    parts[b].begin = static_cast<std::int32_t>(static_cast<std::int64_t>(points.size) * static_cast<std::int64_t>(b) / static_cast<std::int64_t>(parts.size()));
+    parts[b].end = static_cast<std::int32_t>(static_cast<std::int64_t>(points.size) * static_cast<std::int64_t>(b + 1) / static_cast<std::int64_t>(parts.size()));
+  }
+  team.for_each(parts.size(), [&](std::size_t b) { search_block(points, first, options, neighbors, parts[b]); });
+
+  // The join: each block's rows at its offset, its links shifted by it.
+  std::vector<std::size_t> offset(parts.size() + 1, 0);
+  for (std::size_t b = 0; b < parts.size(); ++b) offset[b + 1] = offset[b] + parts[b].rows.size() / width;
+  // One block: its rows are the result (no copy, and no second array at the peak).
+  const bool alone = parts.size() == 1;
+  if (alone) {
+    result.simplices = std::move(parts[0].rows);
+    result.neighbors.resize(parts[0].links.size());
+  } else {
+    result.simplices.resize(offset.back() * width);
+    if (neighbors) result.neighbors.resize(offset.back() * width);
+  }
+  std::vector<std::vector<std::size_t>> pending(parts.size());
+  team.for_each(parts.size(), [&](std::size_t b) {
+    Block& part = parts[b];
+    const std::size_t at = offset[b] * width;
+    if (!alone) std::copy(part.rows.begin(), part.rows.end(), result.simplices.begin() + static_cast<std::ptrdiff_t>(at));
+    for (std::size_t i = 0; i < part.links.size(); ++i) {
+      const std::int32_t link = part.links[i];
+      if (link == kElsewhere) pending[b].push_back(at + i);
+      result.neighbors[at + i] = link >= 0 ? link + static_cast<std::int32_t>(offset[b]) : link;
+    }
+    std::vector<std::int32_t>().swap(part.rows);
+    std::vector<std::int32_t>().swap(part.links);
+  });
+  BlockSearchTotals totals;
+  std::vector<std::size_t> all;
+  for (std::size_t b = 0; b < parts.size(); ++b) {
+    all.insert(all.end(), pending[b].begin(), pending[b].end());
+    totals.counters.calls += parts[b].counters.calls;
+    totals.counters.points_tested += parts[b].counters.points_tested;
+    totals.counters.candidates += parts[b].counters.candidates;
+    totals.hull_facets += parts[b].hull_facets;
+    totals.max_open_facets = std::max(totals.max_open_facets, parts[b].max_open_facets);
+  }
+  if (neighbors) match_pending(all, w, result);
+  return totals;
+}
+
+}  // namespace drange::engine
