@@ -95,33 +95,16 @@ void search_block(const PointStore& points, const FirstFacet& first, const Searc
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   const auto owned = static_cast<std::size_t>(start.back());
-  // order[i]: the found row that becomes row i; the rows not owned follow the owned ones.
-  std::vector<std::int32_t> order(rows);
+  // dest[r]: the row that found row r becomes, by smallest id (a counting sort); the rows not
+  // owned go after the owned ones. start[k] then ends the rows of smallest id begin + k.
+  std::vector<std::int32_t> dest(rows);
   for (std::size_t r = 0, other = owned; r < rows; ++r) {
     const std::int32_t least = std::min(found[r * width], found[r * width + 1]);
-    const std::size_t i = mine(least) ? static_cast<std::size_t>(start[static_cast<std::size_t>(least - block.begin)]++) : other++;
-    order[i] = static_cast<std::int32_t>(r);
-  }
-  // start[k] now ends the rows of smallest id begin + k: a few rows each, sorted by insertion.
-  const auto before = [&](std::int32_t a, std::int32_t b) {
-    return canonical_before(&found[static_cast<std::size_t>(a) * width], &found[static_cast<std::size_t>(b) * width], w);
-  };
-  for (std::size_t k = 0, from = 0; k + 1 < start.size(); ++k) {
-    const auto to = static_cast<std::size_t>(start[k]);
-    for (std::size_t i = from + 1; i < to; ++i)
-      for (std::size_t j = i; j > from && before(order[j], order[j - 1]); --j) std::swap(order[j], order[j - 1]);
-    from = to;
-  }
-  std::vector<std::int32_t>().swap(start);
-  // dest[r]: the row found row r becomes (order's inverse, in order's place).
-  std::vector<std::int32_t>& dest = order;
-  {
-    std::vector<std::int32_t> inverse(rows);
-    for (std::size_t i = 0; i < rows; ++i) inverse[static_cast<std::size_t>(order[i])] = static_cast<std::int32_t>(i);
-    dest.swap(inverse);
+    dest[r] = static_cast<std::int32_t>(mine(least) ? static_cast<std::size_t>(start[static_cast<std::size_t>(least - block.begin)]++)
+                                                     : other++);
   }
   if (neighbors) {
-    // Each link to its final row and its facet to its canonical place, still in found order.
+    // Each link to its row after the counting sort and its facet to its canonical place.
     std::vector<std::int32_t> link(width);
     for (std::size_t r = 0; r < rows; ++r) {
       std::int32_t* at = &links[r * width];
@@ -146,11 +129,30 @@ void search_block(const PointStore& points, const FirstFacet& first, const Searc
       std::swap(dest[i], dest[j]);
     }
   found.resize(owned * width);
-  block.rows = std::move(found);
+  if (neighbors) links.resize(owned * width);
+  // Within each smallest id's rows (a few), canonical order by insertion; with neighbours,
+  // dest[i] follows row i to its place (dest is the identity after the permutation).
+  for (std::size_t k = 0, from = 0; k + 1 < start.size(); ++k) {
+    const auto to = static_cast<std::size_t>(start[k]);
+    for (std::size_t i = from + 1; i < to; ++i)
+      for (std::size_t j = i; j > from && canonical_before(&found[j * width], &found[(j - 1) * width], w); --j) {
+        std::swap_ranges(&found[j * width], &found[j * width] + width, &found[(j - 1) * width]);
+        if (neighbors) {
+          std::swap_ranges(&links[j * width], &links[j * width] + width, &links[(j - 1) * width]);
+          std::swap(dest[j], dest[j - 1]);
+        }
+      }
+    from = to;
+  }
   if (neighbors) {
-    links.resize(owned * width);
+    // dest[i] is now the row before that sort of the row at i: links name rows by that number.
+    std::vector<std::int32_t> moved(owned);
+    for (std::size_t i = 0; i < owned; ++i) moved[static_cast<std::size_t>(dest[i])] = static_cast<std::int32_t>(i);
+    for (std::int32_t& link : links)
+      if (link >= 0) link = moved[static_cast<std::size_t>(link)];
     block.links = std::move(links);
   }
+  block.rows = std::move(found);
 }
 
 // Links the facets that no block could link alone (`pending`: row * w + facet, in the joined

@@ -74,7 +74,7 @@ class StarWrapper {
   int d_;
   FoundSimplex current_;  // the walk's simplex: the last star's first simplex
   std::vector<std::int32_t> facets_;
-  std::vector<int> sides_;
+  std::vector<std::int32_t> sides_;
   std::size_t max_open_facets_ = 0;
 };
 
