@@ -3,6 +3,8 @@
 #include "delaunay/block_search.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <thread>
 #include <numeric>
 #include <vector>
 
@@ -25,6 +27,39 @@ struct Block {
   std::vector<std::int32_t> links;
   SearchCounters counters;
   std::size_t hull_facets = 0, max_open_facets = 0;
+};
+
+// The simplices found so far by every block, for Options::progress, and the flag that stops
+// the blocks when one has failed.
+class SharedProgress {
+ public:
+  explicit SharedProgress(const std::function<void(std::size_t)>& progress)
+      : progress_(progress), caller_(std::this_thread::get_id()) {}
+  // `owned` more simplices found by some block. Reports on the calling thread; throws
+  // Stopped after another block failed.
+  void add(std::size_t owned) {
+    if (stopped_.load(std::memory_order_relaxed)) throw Stopped{};
+    const std::size_t found = found_.fetch_add(owned) + owned;
+    if (std::this_thread::get_id() == caller_) report(found);
+  }
+  // After the blocks, on the calling thread: the reports it missed while it waited for the
+  // others, so that every thread count reports the same counts.
+  void finish() { report(found_.load()); }
+  void stop() { stopped_ = true; }
+  bool stopped() const { return stopped_.load(std::memory_order_relaxed); }
+  struct Stopped {};
+
+ private:
+  const std::function<void(std::size_t)>& progress_;
+  const std::thread::id caller_;
+  std::atomic<std::size_t> found_{0};
+  std::atomic<bool> stopped_{false};
+  std::size_t next_ = kProgressInterval;  // the calling thread's next report
+
+  void report(std::size_t found) {
+    if (!progress_) return;
+    for (; next_ <= found; next_ += kProgressInterval) progress_(next_);
+  }
 };
 
 // Puts the w ids of `row` in canonical form: increasing, the first two exchanged when the
@@ -59,9 +94,10 @@ bool canonical_before(const std::int32_t* a, const std::int32_t* b, int w) {
 
 // Wraps the stars of block.begin..end-1 and keeps, in canonical order, the simplices it owns.
 void search_block(const PointStore& points, const FirstFacet& first, const SearchOptions& options, bool neighbors,
-                  Block& block) {
+                  SharedProgress& progress, Block& block) {
   const int w = points.dim + 1;
   const auto width = static_cast<std::size_t>(w);
+  const auto mine = [&](std::int32_t id) { return id >= block.begin && id < block.end; };
   std::vector<std::int32_t> found, links, hull;
   // Room up front (simplex_estimate.hpp): growing by doubling would copy the rows again.
   const std::size_t room = reservable_simplices(
@@ -71,12 +107,20 @@ void search_block(const PointStore& points, const FirstFacet& first, const Searc
   {
     FacetSearch search(points, options);
     StarWrapper wrapper(points, search, first);
+    // Progress in batches of a few thousand simplices: one shared counter update each.
+    wrapper.report_rows(4096, [&](const std::int32_t* rows, std::size_t count) {
+      std::size_t owned = 0;
+      for (std::size_t r = 0; r < count; ++r) {
+        const std::int32_t* row = rows + r * width;
+        owned += mine(*std::min_element(row, row + w)) ? 1 : 0;
+      }
+      progress.add(owned);
+    });
     std::vector<std::int32_t> wanted(static_cast<std::size_t>(block.end - block.begin));
     std::iota(wanted.begin(), wanted.end(), block.begin);
     wrapper.stars(wanted, found, block.counters, hull, neighbors ? &links : nullptr);
     block.max_open_facets = wrapper.max_open_facets();
   }
-  const auto mine = [&](std::int32_t id) { return id >= block.begin && id < block.end; };
   // A hull facet is counted by the block of its smallest id, which wrapped it (facets sorted).
   for (std::size_t f = 0; f < hull.size(); f += width - 1) block.hull_facets += mine(hull[f]) ? 1 : 0;
 
@@ -187,7 +231,8 @@ void match_pending(const std::vector<std::size_t>& pending, int w, Triangulation
 }  // namespace
 
 BlockSearchTotals search_in_blocks(const PointStore& points, const FirstFacet& first, const SearchOptions& options,
-                                   Team& team, int blocks, bool neighbors, Triangulation& result) {
+                                   Team& team, int blocks, bool neighbors,
+                                   const std::function<void(std::size_t)>& progress, Triangulation& result) {
   const int w = points.dim + 1;
   const auto width = static_cast<std::size_t>(w);
   std::vector<Block> parts(static_cast<std::size_t>(std::max(1, blocks)));
@@ -195,33 +240,42 @@ BlockSearchTotals search_in_blocks(const PointStore& points, const FirstFacet& f
     parts[b].begin = static_cast<std::int32_t>(static_cast<std::int64_t>(points.size) * static_cast<std::int64_t>(b) / static_cast<std::int64_t>(parts.size()));
     parts[b].end = static_cast<std::int32_t>(static_cast<std::int64_t>(points.size) * static_cast<std::int64_t>(b + 1) / static_cast<std::int64_t>(parts.size()));
   }
-  team.for_each(parts.size(), [&](std::size_t b) { search_block(points, first, options, neighbors, parts[b]); });
+  // The blocks in turn on the team's threads. On a failure the team records it, then stops
+  // the others (SharedProgress::add throws in them), and the caller gets the failure.
+  SharedProgress shared(progress);
+  std::atomic<std::size_t> next{0};
+  team.run(
+      static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(team.threads()), parts.size())),
+      [&](int) {
+        for (std::size_t b; !shared.stopped() && (b = next.fetch_add(1)) < parts.size();)
+          search_block(points, first, options, neighbors, shared, parts[b]);
+      },
+      [&] { shared.stop(); });
+  shared.finish();
 
-  // The join: each block's rows at its offset, its links shifted by it.
-  std::vector<std::size_t> offset(parts.size() + 1, 0);
-  for (std::size_t b = 0; b < parts.size(); ++b) offset[b + 1] = offset[b] + parts[b].rows.size() / width;
-  // One block: its rows are the result (no copy, and no second array at the peak).
-  const bool alone = parts.size() == 1;
-  if (alone) {
-    result.simplices = std::move(parts[0].rows);
-    result.neighbors.resize(parts[0].links.size());
-  } else {
-    result.simplices.resize(offset.back() * width);
-    if (neighbors) result.neighbors.resize(offset.back() * width);
-  }
+  // The join, in block order: each block's rows appended to the result, its links shifted by
+  // its offset, then freed, so that the peak holds the result and one block more.
+  std::size_t total = 0;
+  for (const Block& part : parts) total += part.rows.size();
   std::vector<std::vector<std::size_t>> pending(parts.size());
-  team.for_each(parts.size(), [&](std::size_t b) {
+  for (std::size_t b = 0; b < parts.size(); ++b) {
     Block& part = parts[b];
-    const std::size_t at = offset[b] * width;
-    if (!alone) std::copy(part.rows.begin(), part.rows.end(), result.simplices.begin() + static_cast<std::ptrdiff_t>(at));
-    for (std::size_t i = 0; i < part.links.size(); ++i) {
-      const std::int32_t link = part.links[i];
-      if (link == kElsewhere) pending[b].push_back(at + i);
-      result.neighbors[at + i] = link >= 0 ? link + static_cast<std::int32_t>(offset[b]) : link;
+    const std::size_t at = result.simplices.size();
+    if (b == 0) {
+      result.simplices = std::move(part.rows);
+      result.simplices.reserve(total);
+      result.neighbors = std::move(part.links);
+      if (neighbors) result.neighbors.reserve(total);
+    } else {
+      result.simplices.insert(result.simplices.end(), part.rows.begin(), part.rows.end());
+      const auto shift = static_cast<std::int32_t>(at / width);
+      for (const std::int32_t link : part.links) result.neighbors.push_back(link >= 0 ? link + shift : link);
     }
     std::vector<std::int32_t>().swap(part.rows);
     std::vector<std::int32_t>().swap(part.links);
-  });
+    for (std::size_t i = at; i < result.neighbors.size(); ++i)
+      if (result.neighbors[i] == kElsewhere) pending[b].push_back(i);
+  }
   BlockSearchTotals totals;
   std::vector<std::size_t> all;
   for (std::size_t b = 0; b < parts.size(); ++b) {

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 
 #include "delaunay/facet_search.hpp"
 #include "delaunay/first_facet.hpp"
@@ -43,7 +44,11 @@ struct BlockSearchTotals {
 // Every simplex of the points' Delaunay triangulation, in engine ids, into result.simplices in
 // the canonical order above; with `neighbors`, result.neighbors (-1 on the hull). `blocks`: how
 // many ranges the points are cut into (at least 1); the output is the same for every count.
+// `progress` (Options::progress) is called on the calling thread only, with each multiple of
+// kProgressInterval that the simplices found by all blocks pass while that thread wraps; an
+// exception from it stops every block and reaches the caller.
 BlockSearchTotals search_in_blocks(const PointStore& points, const FirstFacet& first, const SearchOptions& options,
-                                   Team& team, int blocks, bool neighbors, Triangulation& result);
+                                   Team& team, int blocks, bool neighbors,
+                                   const std::function<void(std::size_t)>& progress, Triangulation& result);
 
 }  // namespace drange::engine

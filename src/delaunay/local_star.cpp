@@ -166,6 +166,12 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
   std::vector<std::int32_t> ring(kAhead * d);
   FacetInfo ring_info[kAhead];
   std::size_t first = 0, filled = 0;  // the ring holds turns first..filled-1
+  std::size_t reported = rows.size();  // the rows reported so far end here
+  const auto report = [&](bool rest) {
+    if (!report_ || rows.size() == reported || (!rest && rows.size() - reported < report_every_ * (d + 1))) return;
+    report_(&rows[reported], (rows.size() - reported) / (d + 1));
+    reported = rows.size();
+  };
   for (const std::int32_t p : order) {
     if (covered[static_cast<std::size_t>(p)]) continue;
     walk_to(p, counters);
@@ -199,8 +205,10 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
         continue;
       }
       found(found_simplex(facet.data(), info.sigma, apex), &info.owner);
+      report(false);
     }
   }
+  report(true);
 }
 
 }  // namespace drange::engine

@@ -22,6 +22,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "delaunay/facet_search.hpp"
@@ -58,6 +59,12 @@ class StarWrapper {
              std::vector<std::int32_t>& hull_facets, std::vector<std::int32_t>* links = nullptr);
   static constexpr std::int32_t kNotOpened = -1;
   static constexpr std::int32_t kHullSide = -2;
+  // Calls `report(rows, count)` with each `every` simplices that stars() appends, as they are
+  // appended, and with the rest when it returns; an exception from it ends stars().
+  void report_rows(std::size_t every, std::function<void(const std::int32_t*, std::size_t)> report) {
+    report_every_ = every;
+    report_ = std::move(report);
+  }
   // The most facets open at once in the wrappings so far (Statistics::Debug::max_open_facets).
   std::size_t max_open_facets() const { return max_open_facets_; }
 
@@ -76,6 +83,8 @@ class StarWrapper {
   std::vector<std::int32_t> facets_;
   std::vector<std::int32_t> sides_;
   std::size_t max_open_facets_ = 0;
+  std::size_t report_every_ = 0;
+  std::function<void(const std::int32_t*, std::size_t)> report_;
 };
 
 }  // namespace drange::engine

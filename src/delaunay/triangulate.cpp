@@ -86,12 +86,24 @@ bool spatial_order(FacetOrder order, int d) {
 // were closed while they waited, so their turn is only that lookup.
 constexpr std::uint64_t kPrefetchAhead = 4;
 
-// The blocks of the direct search: one per thread, none with fewer than kMinBlockPoints points
-// (a block's walk from the first facet and its boundary cost more than a small block saves).
-// The output does not depend on the count (block_search.hpp).
+// The blocks of the direct search (block_search.hpp): one on one thread; otherwise four per
+// thread, taken in turn, so that a thread that finishes early takes another and the join's
+// peak memory holds one small block beyond the result; none with fewer than kMinBlockPoints
+// points (a block's walk from the first facet and its boundary cost more than a small block
+// saves). The output does not depend on the count.
 constexpr std::int32_t kMinBlockPoints = 4096;
 int block_count(const engine::Team& team, std::int32_t points) {
-  return static_cast<int>(std::max<std::int32_t>(1, std::min<std::int32_t>(team.threads(), points / kMinBlockPoints)));
+  const std::int32_t wanted = team.threads() == 1 ? 1 : 4 * team.threads();
+  return static_cast<int>(std::max<std::int32_t>(1, std::min<std::int32_t>(wanted, points / kMinBlockPoints)));
+}
+
+// Whether the direct search runs in blocks: in 2D and 3D, where a block's star wrapping costs
+// what the whole search does per simplex and its boundary little (from 4D on, stars are large
+// and a block's boundary holds a large part of its simplices: the searches are spread over
+// the threads by the pipeline instead); not for the choice's budgeted probe, nor when a
+// --variant fixes the facet order (fifo, spatial: the order is what they measure).
+bool in_blocks(const SearchOptions& options, int d, std::uint64_t work_budget) {
+  return d <= 3 && work_budget == 0 && options.facet_order == FacetOrder::automatic;
 }
 
 // One thread, FIFO: each facet searched when its turn comes, taken out of the queue then.
@@ -274,9 +286,11 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
     totals.counters.calls = counters.walk_steps;
     totals.counters.points_tested = counters.conflict_tests;
     stats.debug.unfiltered_tests = counters.unfiltered_tests;
-  } else if (work_budget == 0) {
-    const engine::BlockSearchTotals blocks =
-        engine::search_in_blocks(points, first, search_options, team, block_count(team, points.size), options.compute_neighbors, result);
+  } else if (in_blocks(search_options, d, work_budget)) {
+    const std::uint64_t helpers_exact = team.helper_exact_evaluations(), exact = geometry::exact_evaluations();
+    const engine::BlockSearchTotals blocks = engine::search_in_blocks(
+        points, first, search_options, team, block_count(team, points.size), options.compute_neighbors, options.progress, result);
+    totals.exact = geometry::exact_evaluations() - exact + team.helper_exact_evaluations() - helpers_exact;
     totals.counters = blocks.counters;
     stats.hull_facets = blocks.hull_facets;
     stats.debug.max_open_facets = blocks.max_open_facets;
