@@ -14,7 +14,10 @@
 // window and on nothing else. With Options::threads > 1, step 3 runs ahead on helper threads
 // (SearchPipeline, search_pipeline.hpp), and the sort, the kd-tree and the first facet's scans
 // are split between the threads; steps 2 and 4 (Frontier, frontier.hpp) stay on the calling
-// thread, in the serial order, so the output does not change.
+// thread, in the serial order, so the output does not change. In 2D and 3D the search runs
+// instead as blocks of points that the threads wrap on their own (block_search.hpp), each with
+// its own facet table and queue, the output in a canonical order that does not depend on the
+// cut; the serial loops serve there the choice's probe and the variants that fix an order.
 #include <sys/resource.h>
 
 #include <algorithm>
