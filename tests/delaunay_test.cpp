@@ -573,8 +573,12 @@ TEST(DelaunayStatistics, SummaryKeysAreFixed) {
   const std::vector<std::string> expected = {
       "points", "distinct", "simplices", "hull_facets", "calls_per_simplex", "tested_per_simplex",
       "candidates_per_simplex", "exact_fallbacks", "max_open_facets", "shell_spheres", "threads", "wasted_searches",
-      "time_kdtree", "time_first_facet", "time_search", "time_total", "peak_rss", "algorithm", "time_choice"};
+      "time_kdtree", "time_first_facet", "time_search", "time_total", "peak_rss", "algorithm", "time_choice",
+      "time_busy", "time_critical"};
   EXPECT_EQ(keys, expected) << s.summary();
+  // One busy time per thread of the search, the critical path at least the busiest one's.
+  EXPECT_FALSE(s.seconds_busy.empty());
+  for (const double busy : s.seconds_busy) EXPECT_LE(busy, s.seconds_critical_path + 1e-9);
   EXPECT_NE(s.summary().find(" max_open_facets=" + std::to_string(s.debug.max_open_facets) + " "), std::string::npos);
   EXPECT_NE(s.summary().find(" exact_fallbacks=" + std::to_string(s.debug.exact_fallbacks) + " "), std::string::npos);
 }

@@ -80,6 +80,11 @@ struct Statistics {
   double seconds_first_facet = 0;    // gift wrapping to the first facet
   double seconds_choice = 0;         // Options::algorithm "auto": the probe that chose the algorithm
   double seconds_search = 0;         // the main loop: searches, facet table, simplices and neighbours
+  // The search's threads: each one's busy time (in 2D and 3D, its blocks' wrappings and
+  // sorts; otherwise one entry, the search's loop), and the critical path: the busiest
+  // thread's time plus what followed it on the calling thread (the blocks' join).
+  std::vector<double> seconds_busy;
+  double seconds_critical_path = 0;
   double seconds_total = 0;
   std::size_t peak_rss_bytes = 0;    // process peak resident memory at the end of the run
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <thread>
 #include <numeric>
 #include <vector>
@@ -244,14 +245,21 @@ BlockSearchTotals search_in_blocks(const PointStore& points, const FirstFacet& f
   // the others (SharedProgress::add throws in them), and the caller gets the failure.
   SharedProgress shared(progress);
   std::atomic<std::size_t> next{0};
+  const int threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(team.threads()), parts.size()));
+  BlockSearchTotals totals;
+  totals.seconds_busy.assign(static_cast<std::size_t>(threads), 0.0);
   team.run(
-      static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(team.threads()), parts.size())),
-      [&](int) {
+      threads,
+      [&](int rank) {
+        const auto start = std::chrono::steady_clock::now();
         for (std::size_t b; !shared.stopped() && (b = next.fetch_add(1)) < parts.size();)
           search_block(points, first, options, neighbors, shared, parts[b]);
+        totals.seconds_busy[static_cast<std::size_t>(rank)] =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       },
       [&] { shared.stop(); });
   shared.finish();
+  const auto join = std::chrono::steady_clock::now();
 
   // The join, in block order: each block's rows appended to the result, its links shifted by
   // its offset, then freed, so that the peak holds the result and one block more.
@@ -276,7 +284,6 @@ BlockSearchTotals search_in_blocks(const PointStore& points, const FirstFacet& f
     for (std::size_t i = at; i < result.neighbors.size(); ++i)
       if (result.neighbors[i] == kElsewhere) pending[b].push_back(i);
   }
-  BlockSearchTotals totals;
   std::vector<std::size_t> all;
   for (std::size_t b = 0; b < parts.size(); ++b) {
     all.insert(all.end(), pending[b].begin(), pending[b].end());
@@ -287,6 +294,7 @@ BlockSearchTotals search_in_blocks(const PointStore& points, const FirstFacet& f
     totals.max_open_facets = std::max(totals.max_open_facets, parts[b].max_open_facets);
   }
   if (neighbors) match_pending(all, w, result);
+  totals.seconds_join = std::chrono::duration<double>(std::chrono::steady_clock::now() - join).count();
   return totals;
 }
 

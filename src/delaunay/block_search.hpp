@@ -24,6 +24,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <vector>
 
 #include "delaunay/facet_search.hpp"
 #include "delaunay/first_facet.hpp"
@@ -39,6 +40,8 @@ struct BlockSearchTotals {
   SearchCounters counters;
   std::size_t hull_facets = 0;
   std::size_t max_open_facets = 0;  // the largest of any block
+  std::vector<double> seconds_busy;  // per thread: its blocks' wrappings and sorts
+  double seconds_join = 0;           // the join, on the calling thread
 };
 
 // Every simplex of the points' Delaunay triangulation, in engine ids, into result.simplices in

@@ -295,6 +295,8 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
         points, first, search_options, team, block_count(team, points.size), options.compute_neighbors, options.progress, result);
     totals.exact = geometry::exact_evaluations() - exact + team.helper_exact_evaluations() - helpers_exact;
     totals.counters = blocks.counters;
+    stats.seconds_busy = blocks.seconds_busy;
+    stats.seconds_critical_path = *std::max_element(blocks.seconds_busy.begin(), blocks.seconds_busy.end()) + blocks.seconds_join;
     stats.hull_facets = blocks.hull_facets;
     stats.debug.max_open_facets = blocks.max_open_facets;
   } else if (spatial_order(search_options.facet_order, d)) {
@@ -307,6 +309,10 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
     search(frontier, first, points, search_options, team, Lookahead{0, 0}, totals);
   }
   stats.seconds_search = seconds_since(phase);
+  if (stats.seconds_busy.empty()) {  // one loop: the calling thread's is the critical path
+    stats.seconds_busy = {stats.seconds_search};
+    stats.seconds_critical_path = stats.seconds_search;
+  }
 
   // Back to the caller's numbering: one lookup per vertex of every simplex, on the threads.
   util::for_ranges(simplices.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {
