@@ -2,6 +2,10 @@
 // (block_search.hpp says why the output is the same for every cut).
 #include "delaunay/block_search.hpp"
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -62,6 +66,16 @@ class SharedProgress {
     for (; next_ <= found; next_ += kProgressInterval) progress_(next_);
   }
 };
+
+// Returns the pages of freed blocks to the system at once. A block's rows are allocated by
+// the thread that wrapped it, from that thread's malloc arena, where glibc keeps freed memory
+// for reuse: the join, which frees each block as it appends it, would otherwise peak at the
+// blocks and the result together.
+void give_back_freed_memory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
 
 // Puts the w ids of `row` in canonical form: increasing, the first two exchanged when the
 // sort's permutation is odd (the row was positively oriented, and so stays). place[k] gets the
@@ -281,6 +295,7 @@ BlockSearchTotals search_in_blocks(const PointStore& points, const FirstFacet& f
     }
     std::vector<std::int32_t>().swap(part.rows);
     std::vector<std::int32_t>().swap(part.links);
+    give_back_freed_memory();
     for (std::size_t i = at; i < result.neighbors.size(); ++i)
       if (result.neighbors[i] == kElsewhere) pending[b].push_back(i);
   }

@@ -86,8 +86,19 @@ void StarWrapper::walk_to(std::int32_t p, SearchCounters& counters) {
 void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std::int32_t>& rows,
                         SearchCounters& counters, std::vector<std::int32_t>& hull_facets, std::vector<std::int32_t>* links) {
   const auto d = static_cast<std::size_t>(d_);
-  std::vector<char> is_wanted(static_cast<std::size_t>(points_.size), 0), covered(is_wanted.size(), 0);
-  for (const std::int32_t p : wanted) is_wanted[static_cast<std::size_t>(p)] = 1;
+  std::vector<std::int32_t> order(wanted);
+  std::sort(order.begin(), order.end());
+  order.erase(std::unique(order.begin(), order.end()), order.end());
+  // The wanted points: a range of ids (a block) is told by two comparisons, other sets by a
+  // flag per point.
+  const bool range = !order.empty() && order.back() - order.front() + 1 == static_cast<std::int32_t>(order.size());
+  const std::int32_t low = order.empty() ? 0 : order.front(), count = static_cast<std::int32_t>(order.size());
+  std::vector<char> is_wanted(range ? 0 : static_cast<std::size_t>(points_.size), 0), covered(static_cast<std::size_t>(points_.size), 0);
+  if (!range)
+    for (const std::int32_t p : order) is_wanted[static_cast<std::size_t>(p)] = 1;
+  const auto wanted_point = [&](std::int32_t v) {
+    return range ? static_cast<std::uint32_t>(v - low) < static_cast<std::uint32_t>(count) : is_wanted[static_cast<std::size_t>(v)] != 0;
+  };
   // The stars' open facets through a wanted point (found on one side, not yet on the other),
   // and the queue of those to search, least smallest vertex id first: the whole construction's
   // spatial order (ids follow the kd-tree, so consecutive searches read nearby nodes). One
@@ -125,7 +136,7 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
       // Facet d of a simplex found from a facet is that facet, closed already; a facet through
       // no wanted point leads out of the stars and is left alone.
       pending.opened[f] = !(from && f == d) && std::any_of(ids, ids + d, [&](std::int32_t v) {
-        return is_wanted[static_cast<std::size_t>(v)] != 0;
+        return wanted_point(v);
       });
       if (!pending.opened[f]) continue;
       pending.hashes[f] = facet_hash(ids, d_);
@@ -155,8 +166,6 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
       if (pending.opened[f] && pending.hashes[f] == hash && std::equal(ids, ids + d, &facets_[f * d])) return true;
     return false;
   };
-  std::vector<std::int32_t> order(wanted);
-  std::sort(order.begin(), order.end());
   // More simplices than n points can have: a wrong apex made them overlap (simplex_estimate.hpp).
   const std::size_t limit = simplex_upper_bound(d_, static_cast<std::size_t>(points_.size)) * (d + 1);
   // Facets leave the queue a few turns ahead, into a ring, so that each one's table slot is
