@@ -9,7 +9,7 @@ namespace drange::cli {
 
 Blocks::Blocks(const std::vector<double>& sample, int dim, int count) : dim_(dim) {
   const double inf = std::numeric_limits<double>::infinity();
-  Box all{std::vector<double>(static_cast<std::size_t>(dim), -inf), std::vector<double>(static_cast<std::size_t>(dim), inf)};
+  const Box all = Box::filled(static_cast<std::size_t>(dim), -inf, inf);
   std::vector<const double*> items;
   for (std::size_t i = 0; i + static_cast<std::size_t>(dim) <= sample.size(); i += static_cast<std::size_t>(dim))
     items.push_back(sample.data() + i);

@@ -12,13 +12,20 @@
 // whole bounding box.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <vector>
+
+#include "drange/points.hpp"
 
 namespace drange::cli {
 
-// A closed box, lo[k] <= x[k] <= hi[k].
+// A closed box, lo[k] <= x[k] <= hi[k] for k < dim (fixed size: millions are made, one per
+// simplex).
 struct Box {
-  std::vector<double> lo, hi;
+  std::size_t dim = 0;
+  std::array<double, kMaxDimension> lo{}, hi{};
+  static Box filled(std::size_t dim, double lo, double hi);
   bool contains(const Box& inner) const;
   bool meets(const Box& other) const;
   bool contains_point(const double* p) const;

@@ -2,12 +2,18 @@
 #include "split_rounds.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <ctime>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <numeric>
+#include <utility>
 
 #include "drange/errors.hpp"
+#include "drange/hull.hpp"
 #include "split_blocks.hpp"
 
 namespace drange::cli {
@@ -75,12 +81,17 @@ Box bounds_of(const PointShare& share, const Processes& group) {
       lo[k] = std::min(lo[k], share.points.point(i)[k]);
       hi[k] = std::max(hi[k], share.points.point(i)[k]);
     }
-  return Box{group.reduce(lo, Processes::Reduction::Min), group.reduce(hi, Processes::Reduction::Max)};
+  lo = group.reduce(lo, Processes::Reduction::Min);
+  hi = group.reduce(hi, Processes::Reduction::Max);
+  Box box = Box::filled(d, 0, 0);
+  std::copy(lo.begin(), lo.end(), box.lo.begin());
+  std::copy(hi.begin(), hi.end(), box.hi.begin());
+  return box;
 }
 
 // The mean spacing of the points: the side of a cube holding one point on average.
 double mean_spacing(const Box& bounds, std::int64_t points) {
-  const std::size_t d = bounds.lo.size();
+  const std::size_t d = bounds.dim;
   double volume = 1, widest = 0;
   std::size_t sides = 0;
   for (std::size_t k = 0; k < d; ++k) {
@@ -96,36 +107,157 @@ double mean_spacing(const Box& bounds, std::int64_t points) {
 }
 
 Box widened(Box box, double by) {
-  for (std::size_t k = 0; k < box.lo.size(); ++k) {
+  for (std::size_t k = 0; k < box.dim; ++k) {
     box.lo[k] -= by;
     box.hi[k] += by;
   }
   return box;
 }
 
-// The process's own points ordered by their first coordinate, to answer requests for boxes.
+Box clipped(Box box, const Box& bounds) {
+  for (std::size_t k = 0; k < box.dim; ++k) {
+    box.lo[k] = std::max(box.lo[k], bounds.lo[k]);
+    box.hi[k] = std::min(box.hi[k], bounds.hi[k]);
+  }
+  return box;
+}
+
+// The process's own points in a grid of cells (a few points per cell, over their bounding box),
+// to answer requests for boxes, thin slabs along the input's sides included, by visiting only
+// the cells that meet them.
 class OwnIndex {
  public:
-  explicit OwnIndex(const Held& held) : held_(held) {
+  explicit OwnIndex(const Held& held) : held_(held), d_(static_cast<std::size_t>(held.dim)) {
+    std::vector<std::size_t> own;
     for (std::size_t i = 0; i < held.size(); ++i)
-      if (held.own[i]) order_.push_back(i);
-    std::sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) { return held.point(a)[0] < held.point(b)[0]; });
+      if (held.own[i]) own.push_back(i);
+    lo_.assign(d_, std::numeric_limits<double>::infinity());
+    hi_.assign(d_, -std::numeric_limits<double>::infinity());
+    for (std::size_t i : own)
+      for (std::size_t k = 0; k < d_; ++k) {
+        lo_[k] = std::min(lo_[k], held.point(i)[k]);
+        hi_[k] = std::max(hi_[k], held.point(i)[k]);
+      }
+    const double per_axis = std::max(1.0, std::floor(std::pow(static_cast<double>(own.size()) / 4.0, 1.0 / static_cast<double>(d_))));
+    cells_.assign(d_, static_cast<std::size_t>(per_axis));
+    std::size_t total = 1;
+    for (std::size_t k = 0; k < d_; ++k) total *= cells_[k];
+    start_.assign(total + 1, 0);
+    for (std::size_t i : own) ++start_[cell_of(held.point(i)) + 1];
+    for (std::size_t c = 0; c < total; ++c) start_[c + 1] += start_[c];
+    members_.resize(own.size());
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    for (std::size_t i : own) members_[fill[cell_of(held.point(i))]++] = i;
   }
+
   // Appends the own points in `box` not yet sent to this requester (`sent` marks them).
   void answer(const Box& box, std::vector<char>& sent, std::vector<double>& out) const {
-    auto it = std::lower_bound(order_.begin(), order_.end(), box.lo[0],
-                               [&](std::size_t i, double x) { return held_.point(i)[0] < x; });
-    for (; it != order_.end() && held_.point(*it)[0] <= box.hi[0]; ++it) {
-      if (sent[*it] || !box.contains_point(held_.point(*it))) continue;
-      sent[*it] = 1;
-      append_row(out, held_.point(*it), held_.dim, held_.ids[*it]);
+    if (members_.empty()) return;
+    std::vector<std::size_t> first(d_), last(d_), at(d_);
+    for (std::size_t k = 0; k < d_; ++k) {
+      if (box.hi[k] < lo_[k] || box.lo[k] > hi_[k]) return;
+      first[k] = axis_cell(k, box.lo[k]);
+      last[k] = axis_cell(k, box.hi[k]);
+    }
+    at = first;
+    for (;;) {
+      std::size_t c = 0;
+      for (std::size_t k = 0; k < d_; ++k) c = c * cells_[k] + at[k];
+      for (std::size_t m = start_[c]; m < start_[c + 1]; ++m) {
+        const std::size_t i = members_[m];
+        if (sent[i] || !box.contains_point(held_.point(i))) continue;
+        sent[i] = 1;
+        append_row(out, held_.point(i), held_.dim, held_.ids[i]);
+      }
+      std::size_t k = d_;  // the next cell, last axis fastest
+      while (k > 0 && at[k - 1] == last[k - 1]) {
+        at[k - 1] = first[k - 1];
+        --k;
+      }
+      if (k == 0) return;
+      ++at[k - 1];
     }
   }
 
  private:
+  std::size_t axis_cell(std::size_t k, double x) const {
+    if (!(x > lo_[k])) return 0;
+    const double f = (x - lo_[k]) / (hi_[k] - lo_[k]) * static_cast<double>(cells_[k]);
+    return std::min(cells_[k] - 1, static_cast<std::size_t>(std::max(0.0, f)));
+  }
+  std::size_t cell_of(const double* p) const {
+    std::size_t c = 0;
+    for (std::size_t k = 0; k < d_; ++k) c = c * cells_[k] + axis_cell(k, p[k]);
+    return c;
+  }
+
   const Held& held_;
-  std::vector<std::size_t> order_;
+  std::size_t d_;
+  std::vector<double> lo_, hi_;
+  std::vector<std::size_t> cells_, start_, members_;
 };
+
+// The pending points on the boundary of the hull of the points held (its vertices, and the points
+// in its faces): no hull facet of their triangulation goes through any other point.
+std::vector<char> hull_candidates(const Held& held, const std::vector<char>& is_pending) {
+  const ConvexHull hull = convex_hull(PointsView(held.coords.data(), held.size(), held.dim));
+  std::vector<char> candidate(held.size(), 0);
+  for (std::int32_t v : hull.vertices) candidate[static_cast<std::size_t>(v)] = is_pending[static_cast<std::size_t>(v)];
+  for (std::size_t c = 0; c < hull.coplanar.size(); c += 3)
+    candidate[static_cast<std::size_t>(hull.coplanar[c])] = is_pending[static_cast<std::size_t>(hull.coplanar[c])];
+  return candidate;
+}
+
+// For facet k of each simplex (row s * (d + 1) + k): whether no other simplex returned has it,
+// among the facets through a `candidate` point (a star holds both simplices of each facet through
+// its point, so there one alone is a hull facet of the points held); 0 for the other facets. Facets are matched by a
+// hash of their sorted vertices, then compared.
+std::vector<char> unmatched_facets(const Triangulation& stars, const std::vector<char>& candidate) {
+  const auto width = static_cast<std::size_t>(stars.dim) + 1;
+  std::vector<char> unmatched(stars.simplices.size(), 0);
+  std::vector<std::pair<std::uint64_t, std::size_t>> keys;  // (hash, row)
+  // The sorted vertices of the facet in row r.
+  const auto facet_of = [&](std::size_t r) {
+    std::array<std::int32_t, kMaxDimension + 1> facet{};
+    const std::int32_t* v = stars.simplex(r / width);
+    std::size_t f = 0;
+    for (std::size_t j = 0; j < width; ++j)
+      if (j != r % width) facet[f++] = v[j];
+    std::sort(facet.begin(), facet.begin() + static_cast<std::ptrdiff_t>(f));
+    return facet;
+  };
+  for (std::size_t s = 0; s < stars.size(); ++s) {
+    const std::int32_t* v = stars.simplex(s);
+    if (std::none_of(v, v + width, [&](std::int32_t i) { return candidate[static_cast<std::size_t>(i)] != 0; })) continue;
+    std::array<std::int32_t, kMaxDimension + 1> sorted{};
+    std::copy(v, v + width, sorted.begin());
+    std::sort(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(width));
+    for (std::size_t k = 0; k < width; ++k) {
+      const std::int32_t opposite = stars.simplex(s)[k];
+      bool through_pending = false;
+      std::uint64_t hash = 1469598103934665603ull;
+      for (std::size_t j = 0; j < width; ++j) {
+        if (sorted[j] == opposite) continue;
+        through_pending = through_pending || candidate[static_cast<std::size_t>(sorted[j])];
+        hash = (hash ^ static_cast<std::uint64_t>(sorted[j])) * 1099511628211ull;
+      }
+      if (through_pending) keys.emplace_back(hash, s * width + k);
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  const auto same = [&](std::size_t a, std::size_t b) { return facet_of(a) == facet_of(b); };
+  for (std::size_t i = 0; i < keys.size();) {
+    std::size_t j = i;
+    while (j < keys.size() && keys[j].first == keys[i].first) ++j;
+    for (std::size_t a = i; a < j; ++a) {  // a hash's facets: usually two, the same one
+      bool matched = false;
+      for (std::size_t b = i; b < j && !matched; ++b) matched = b != a && same(keys[a].second, keys[b].second);
+      unmatched[keys[a].second] = matched ? 0 : 1;
+    }
+    i = j;
+  }
+  return unmatched;
+}
 
 }  // namespace
 
@@ -180,7 +312,7 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
   part.points_owned = pending.size();
 
   Options star_options = options;
-  star_options.compute_neighbors = true;
+  star_options.compute_neighbors = false;  // unmatched_facets() finds the few that matter
   star_options.progress = nullptr;
   const auto width = d + 1;
   for (;;) {
@@ -199,6 +331,7 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
       }
       Triangulation stars;
       const auto start = Clock::now();
+      const std::clock_t cpu = std::clock();
       try {
         stars = delaunay_stars(PointsView(held.coords.data(), held.size(), dim), local, star_options);
       } catch (const DegenerateInputError&) {
@@ -210,6 +343,8 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
         return;
       }
       part.seconds_search += std::chrono::duration<double>(Clock::now() - start).count();
+      if (std::getenv("DRANGE_SPLIT_DEBUG"))
+        std::fprintf(stderr, "rank %d stars %.3fs cpu %.3fs: %s\n", group.rank(), std::chrono::duration<double>(Clock::now() - start).count(), double(std::clock() - cpu) / CLOCKS_PER_SEC, stars.stats.summary().c_str());
       if (part.rounds == 1)
         for (const Duplicate& dup : stars.duplicates) {
           const auto i = static_cast<std::size_t>(dup.index);
@@ -218,6 +353,7 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
           part.duplicates.push_back(static_cast<double>(held.ids[static_cast<std::size_t>(dup.original)]));
           part.duplicates.insert(part.duplicates.end(), held.point(i), held.point(i) + dim);
         }
+      const std::vector<char> unmatched = unmatched_facets(stars, hull_candidates(held, is_pending));
       std::vector<char> open(held.size(), 0);  // pending points whose star is not final
       std::vector<const double*> corners(width), facet(d);
       for (std::size_t s = 0; s < stars.size(); ++s) {
@@ -227,9 +363,14 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
         if (!is_known(ball)) {
           for (std::size_t k = 0; k < width; ++k) open[static_cast<std::size_t>(v[k])] = 1;
           requests.push_back(ball);
+          if (std::getenv("DRANGE_SPLIT_DEBUG") && ball.hi[0] - ball.lo[0] > 0.5 && ball.hi[1] - ball.lo[1] > 0.5) {
+            for (std::size_t k = 0; k < width; ++k) std::fprintf(stderr, "%lld ", (long long)held.ids[v[k]]);
+            for (std::size_t k = 0; k < d; ++k) std::fprintf(stderr, "[%g %g] ", ball.lo[k], ball.hi[k]);
+            std::fprintf(stderr, " ball\n");
+          }
         }
         for (std::size_t k = 0; k < width; ++k) {
-          if (stars.neighbors[s * width + k] >= 0) continue;
+          if (!unmatched[s * width + k]) continue;
           // A hull facet here: is it the whole input's?
           bool through_pending = false;
           for (std::size_t j = 0, f = 0; j < width; ++j) {
@@ -243,6 +384,11 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
           for (std::size_t j = 0; j < width; ++j)
             if (j != k) open[static_cast<std::size_t>(v[j])] = 1;
           requests.push_back(beyond);
+          if (std::getenv("DRANGE_SPLIT_DEBUG") && beyond.hi[0] - beyond.lo[0] > 0.5 && beyond.hi[1] - beyond.lo[1] > 0.5) {
+            for (std::size_t k = 0; k < width; ++k) std::fprintf(stderr, "%lld ", (long long)held.ids[v[k]]);
+            for (std::size_t k = 0; k < d; ++k) std::fprintf(stderr, "[%g %g] ", beyond.lo[k], beyond.hi[k]);
+            std::fprintf(stderr, " beyond\n");
+          }
         }
       }
       // Keep the simplices whose smallest vertex is a pending point with a final star.
@@ -257,16 +403,23 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
         if (is_pending[i] && open[i]) still.push_back(held.ids[i]);
     });
     pending = std::move(still);
+    if (std::getenv("DRANGE_SPLIT_DEBUG")) std::fprintf(stderr, "rank %d round cpu %.3f\n", group.rank(), double(std::clock()) / CLOCKS_PER_SEC);
+    if (std::getenv("DRANGE_SPLIT_DEBUG"))
+      std::fprintf(stderr, "rank %d round %d: held %zu pending %zu requests %zu known %zu\n", group.rank(), part.rounds,
+                   held.size(), pending.size(), requests.size(), known.size());
     if (group.sum(static_cast<long long>(requests.size())) == 0) break;
 
     // Ask the blocks that meet each region for their points in it; answer the others' asks.
     std::vector<std::vector<double>> asks(n);
-    for (const Box& region : requests) {
+    for (Box region : requests) {
+      // Widened by the ghost layer's width, so that the simplices the new points make are
+      // mostly decided in the next round.
+      region = clipped(widened(region, margin), bounds);
       for (int b : blocks.meeting(region)) {
         if (b == group.rank()) continue;
         auto& to = asks[static_cast<std::size_t>(b)];
-        to.insert(to.end(), region.lo.begin(), region.lo.end());
-        to.insert(to.end(), region.hi.begin(), region.hi.end());
+        to.insert(to.end(), region.lo.begin(), region.lo.begin() + static_cast<std::ptrdiff_t>(d));
+        to.insert(to.end(), region.hi.begin(), region.hi.begin() + static_cast<std::ptrdiff_t>(d));
       }
       known.push_back(region);
     }
@@ -280,10 +433,9 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
       for (std::size_t b = 0; b < n; ++b) {
         std::vector<char> sent(held.size(), 0);
         for (const std::size_t end = at + from[b]; at + 2 * d <= end; at += 2 * d) {
-          const Box region{std::vector<double>(asked.begin() + static_cast<std::ptrdiff_t>(at),
-                                               asked.begin() + static_cast<std::ptrdiff_t>(at + d)),
-                           std::vector<double>(asked.begin() + static_cast<std::ptrdiff_t>(at + d),
-                                               asked.begin() + static_cast<std::ptrdiff_t>(at + 2 * d))};
+          Box region = Box::filled(d, 0, 0);
+          std::copy_n(asked.begin() + static_cast<std::ptrdiff_t>(at), d, region.lo.begin());
+          std::copy_n(asked.begin() + static_cast<std::ptrdiff_t>(at + d), d, region.hi.begin());
           index.answer(region, sent, answers[b]);
         }
       }
