@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -63,21 +62,12 @@ double peak_rss_bytes() {
   return static_cast<double>(usage.ru_maxrss) * 1024.0;  // Linux: KiB
 }
 
-// Exact copies in delaunay()'s order: by coordinates, then input index.
-std::vector<Duplicate> ordered_duplicates(const std::vector<double>& rows, int dim) {
-  const auto width = static_cast<std::size_t>(dim) + 2;
-  std::vector<std::size_t> order(rows.size() / width);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const double* p = &rows[a * width];
-    const double* q = &rows[b * width];
-    for (std::size_t k = 2; k < width; ++k)
-      if (p[k] != q[k]) return p[k] < q[k];
-    return p[0] < q[0];
-  });
+// Exact copies as delaunay() lists them: by input index.
+std::vector<Duplicate> ordered_duplicates(const std::vector<double>& pairs) {
   std::vector<Duplicate> duplicates;
-  for (std::size_t i : order)
-    duplicates.push_back(Duplicate{static_cast<std::int64_t>(rows[i * width]), static_cast<std::int64_t>(rows[i * width + 1])});
+  for (std::size_t i = 0; i + 1 < pairs.size(); i += 2)
+    duplicates.push_back(Duplicate{static_cast<std::int64_t>(pairs[i]), static_cast<std::int64_t>(pairs[i + 1])});
+  std::sort(duplicates.begin(), duplicates.end(), [](const Duplicate& a, const Duplicate& b) { return a.index < b.index; });
   return duplicates;
 }
 
@@ -114,7 +104,7 @@ int triangulate_across_processes(const std::string& input, const Arguments& argu
       whole.dim = dim;
       whole.num_points = static_cast<std::size_t>(total);
       whole.simplices = std::move(simplices);
-      whole.duplicates = ordered_duplicates(duplicates, dim);
+      whole.duplicates = ordered_duplicates(duplicates);
       whole.stats.points = whole.num_points;
       whole.stats.distinct_points = whole.num_points - whole.duplicates.size();
       whole.stats.simplices = whole.size();

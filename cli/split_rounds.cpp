@@ -4,10 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <ctime>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <numeric>
 #include <utility>
@@ -331,7 +328,6 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
       }
       Triangulation stars;
       const auto start = Clock::now();
-      const std::clock_t cpu = std::clock();
       try {
         stars = delaunay_stars(PointsView(held.coords.data(), held.size(), dim), local, star_options);
       } catch (const DegenerateInputError&) {
@@ -343,15 +339,12 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
         return;
       }
       part.seconds_search += std::chrono::duration<double>(Clock::now() - start).count();
-      if (std::getenv("DRANGE_SPLIT_DEBUG"))
-        std::fprintf(stderr, "rank %d stars %.3fs cpu %.3fs: %s\n", group.rank(), std::chrono::duration<double>(Clock::now() - start).count(), double(std::clock() - cpu) / CLOCKS_PER_SEC, stars.stats.summary().c_str());
       if (part.rounds == 1)
         for (const Duplicate& dup : stars.duplicates) {
           const auto i = static_cast<std::size_t>(dup.index);
           if (!held.own[i]) continue;
           part.duplicates.push_back(static_cast<double>(held.ids[i]));
           part.duplicates.push_back(static_cast<double>(held.ids[static_cast<std::size_t>(dup.original)]));
-          part.duplicates.insert(part.duplicates.end(), held.point(i), held.point(i) + dim);
         }
       const std::vector<char> unmatched = unmatched_facets(stars, hull_candidates(held, is_pending));
       std::vector<char> open(held.size(), 0);  // pending points whose star is not final
@@ -363,11 +356,6 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
         if (!is_known(ball)) {
           for (std::size_t k = 0; k < width; ++k) open[static_cast<std::size_t>(v[k])] = 1;
           requests.push_back(ball);
-          if (std::getenv("DRANGE_SPLIT_DEBUG") && ball.hi[0] - ball.lo[0] > 0.5 && ball.hi[1] - ball.lo[1] > 0.5) {
-            for (std::size_t k = 0; k < width; ++k) std::fprintf(stderr, "%lld ", (long long)held.ids[v[k]]);
-            for (std::size_t k = 0; k < d; ++k) std::fprintf(stderr, "[%g %g] ", ball.lo[k], ball.hi[k]);
-            std::fprintf(stderr, " ball\n");
-          }
         }
         for (std::size_t k = 0; k < width; ++k) {
           if (!unmatched[s * width + k]) continue;
@@ -384,11 +372,6 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
           for (std::size_t j = 0; j < width; ++j)
             if (j != k) open[static_cast<std::size_t>(v[j])] = 1;
           requests.push_back(beyond);
-          if (std::getenv("DRANGE_SPLIT_DEBUG") && beyond.hi[0] - beyond.lo[0] > 0.5 && beyond.hi[1] - beyond.lo[1] > 0.5) {
-            for (std::size_t k = 0; k < width; ++k) std::fprintf(stderr, "%lld ", (long long)held.ids[v[k]]);
-            for (std::size_t k = 0; k < d; ++k) std::fprintf(stderr, "[%g %g] ", beyond.lo[k], beyond.hi[k]);
-            std::fprintf(stderr, " beyond\n");
-          }
         }
       }
       // Keep the simplices whose smallest vertex is a pending point with a final star.
@@ -403,10 +386,6 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
         if (is_pending[i] && open[i]) still.push_back(held.ids[i]);
     });
     pending = std::move(still);
-    if (std::getenv("DRANGE_SPLIT_DEBUG")) std::fprintf(stderr, "rank %d round cpu %.3f\n", group.rank(), double(std::clock()) / CLOCKS_PER_SEC);
-    if (std::getenv("DRANGE_SPLIT_DEBUG"))
-      std::fprintf(stderr, "rank %d round %d: held %zu pending %zu requests %zu known %zu\n", group.rank(), part.rounds,
-                   held.size(), pending.size(), requests.size(), known.size());
     if (group.sum(static_cast<long long>(requests.size())) == 0) break;
 
     // Ask the blocks that meet each region for their points in it; answer the others' asks.

@@ -21,7 +21,7 @@ namespace drange::cli {
 
 struct SplitPart {
   std::vector<std::int32_t> simplices;  // input indices, each simplex positively oriented
-  // Own exact copies: rows of (index, original, coordinates), to be ordered as delaunay() does.
+  // Own exact copies: pairs of input indices (copy, original).
   std::vector<double> duplicates;
   std::size_t points_owned = 0;
   std::size_t ghost_points = 0;  // points held that belong to other blocks
