@@ -11,12 +11,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <sys/resource.h>
 
 #include "agreement.hpp"
+#include "command_common.hpp"
 #include "commands.hpp"
 #include "drange/delaunay.hpp"
 #include "drange/errors.hpp"
@@ -71,6 +73,37 @@ std::vector<Duplicate> ordered_duplicates(const std::vector<double>& pairs) {
   return duplicates;
 }
 
+// The qhull layout written by all the processes together: each formats its own simplices, and
+// MPI-IO writes them at offsets from a prefix sum into a temporary file next to `output`,
+// which process 0 renames over it once every process has written (or removes).
+void write_qhull_together(const Processes& group, const Agreement& agree, const std::string& output,
+                          const std::vector<std::int32_t>& simplices, int dim, const std::vector<double>& duplicates,
+                          const std::vector<double>& figures, const Arguments& arguments) {
+  const auto width = static_cast<std::size_t>(dim) + 1;
+  const long long total = group.sum(static_cast<long long>(simplices.size() / width));
+  std::string text;
+  agree.run([&] {
+    std::ostringstream rows;
+    write_index_rows(rows, simplices, dim + 1);
+    text = rows.str();
+    text.erase(0, text.find('\n') + 1);  // the count line: process 0 writes the whole count
+    if (group.rank() == 0) text.insert(0, std::to_string(total) + "\n");
+  });
+  const std::string temporary = output + ".drange-split.tmp";
+  const std::string failed = group.write_in_rank_order(temporary, text);
+  std::string().swap(text);
+  agree.run([&] {
+    if (group.rank() != 0) return;
+    if (!failed.empty() || std::rename(temporary.c_str(), output.c_str()) != 0) {
+      std::remove(temporary.c_str());
+      throw InputError("cannot write '" + output + "'" + (failed.empty() ? std::string() : " (" + failed + ")"));
+    }
+    const std::vector<Duplicate> copies = ordered_duplicates(duplicates);
+    if (!copies.empty() && !arguments.has("quiet")) std::fprintf(stderr, "drange: %s\n", duplicates_message(copies).c_str());
+    if (arguments.has("stats")) print_stats(group, figures);
+  });
+}
+
 }  // namespace
 
 int triangulate_across_processes(const std::string& input, const Arguments& arguments, const std::string& output,
@@ -91,13 +124,19 @@ int triangulate_across_processes(const std::string& input, const Arguments& argu
     const double points_read = static_cast<double>(share.points.size());
     const SplitPart part = triangulate_share(std::move(share), group, agree, options);
     const auto width = static_cast<std::size_t>(dim) + 1;
-    std::vector<std::int32_t> simplices = group.gather(part.simplices);
+    std::vector<std::int32_t> simplices;
+    const bool together = format == OutputFormat::Qhull && output != "-" && !arguments.has("neighbors");
+    if (!together) simplices = group.gather(part.simplices);
     const std::vector<double> duplicates = group.gather(part.duplicates);
     const std::vector<double> figures = group.gather(std::vector<double>{
         points_read, static_cast<double>(part.points_owned), static_cast<double>(part.ghost_points),
         static_cast<double>(part.rounds), static_cast<double>(part.simplices.size() / width), time_read,
         part.seconds_search, std::chrono::duration<double>(Clock::now() - start).count(),
         peak_rss_bytes(), part.bytes_sent});
+    if (together) {
+      write_qhull_together(group, agree, output, part.simplices, dim, duplicates, figures, arguments);
+      return kExitSuccess;
+    }
     agree.run([&] {
       if (group.rank() != 0) return;
       Triangulation whole;

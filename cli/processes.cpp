@@ -214,6 +214,32 @@ std::vector<double> Processes::exchange(const std::vector<std::vector<double>>& 
   return to_each[0];
 }
 
+std::string Processes::write_in_rank_order(const std::string& path, const std::string& text) const {
+#ifdef DRANGE_HAVE_MPI
+  if (joined_) {
+    const long long offset = sum_before(static_cast<long long>(text.size()));
+    MPI_File file;
+    int failed = MPI_File_open(MPI_COMM_WORLD, path.c_str(), MPI_MODE_CREATE | MPI_MODE_WRONLY, MPI_INFO_NULL, &file);
+    if (max(failed != MPI_SUCCESS ? 1 : 0) != 0) return "cannot create '" + path + "'";
+    failed = MPI_File_set_size(file, 0);
+    // Pieces of at most 1 GiB: MPI's counts are ints.
+    constexpr std::size_t kPiece = std::size_t{1} << 30;
+    for (std::size_t at = 0; failed == MPI_SUCCESS && at < text.size(); at += kPiece) {
+      const int count = static_cast<int>(std::min(kPiece, text.size() - at));
+      MPI_Status status;
+      failed = MPI_File_write_at(file, static_cast<MPI_Offset>(offset + static_cast<long long>(at)), text.data() + at,
+                                 count, MPI_CHAR, &status);
+    }
+    if (MPI_File_close(&file) != MPI_SUCCESS) failed = 1;
+    if (max(failed != MPI_SUCCESS ? 1 : 0) != 0) return "cannot write '" + path + "'";
+    return std::string();
+  }
+#endif
+  (void)path;
+  (void)text;
+  return "no processes to write with";
+}
+
 const Processes& processes() { return *the_processes; }
 
 }  // namespace drange::cli

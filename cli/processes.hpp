@@ -40,6 +40,10 @@ class Processes {
   // and the number of values from each in `from_each`. Throws UsageError (on every process)
   // where a count exceeds MPI's int.
   std::vector<double> exchange(const std::vector<std::vector<double>>& to_each, std::vector<std::size_t>& from_each) const;
+  // Writes every process's `text` into the file `path` (created or emptied), in rank order, all
+  // together (MPI-IO). Returns the system's message for the first failure on any process, on
+  // every process; empty when all wrote.
+  std::string write_in_rank_order(const std::string& path, const std::string& text) const;
 
  private:
   int count_ = 1;

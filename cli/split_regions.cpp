@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <limits>
 
+#include <gmpxx.h>
+
 namespace drange::cli {
 namespace {
 
@@ -214,6 +216,107 @@ bool beyond_region_in(const std::vector<const double*>& facet, const double* ins
   return true;
 }
 
+// The last resort, for simplices and facets too flat for long double: the centre or normal in
+// rational arithmetic (exact), the box rounded outward. False only when flat in exact terms.
+double down_exact(const mpq_class& x) {
+  const double d = x.get_d();  // truncated toward zero: one step outward is below x
+  return std::nextafter(d, -std::numeric_limits<double>::infinity());
+}
+double up_exact(const mpq_class& x) {
+  const double d = x.get_d();
+  return std::nextafter(d, std::numeric_limits<double>::infinity());
+}
+// A double at least sqrt(x), x >= 0.
+mpq_class sqrt_up(const mpq_class& x) {
+  double s = std::sqrt(x.get_d());
+  while (mpq_class(s) * mpq_class(s) < x) s = std::nextafter(s, std::numeric_limits<double>::infinity());
+  return mpq_class(s);
+}
+
+bool solve_exact(std::vector<std::vector<mpq_class>> a, std::vector<mpq_class> b, std::vector<mpq_class>& x) {
+  const std::size_t n = b.size();
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t p = c;
+    while (p < n && a[p][c] == 0) ++p;
+    if (p == n) return false;
+    std::swap(a[p], a[c]);
+    std::swap(b[p], b[c]);
+    for (std::size_t r = 0; r < n; ++r) {
+      if (r == c || a[r][c] == 0) continue;
+      const mpq_class f = a[r][c] / a[c][c];
+      for (std::size_t k = c; k < n; ++k) a[r][k] -= f * a[c][k];
+      b[r] -= f * b[c];
+    }
+  }
+  x.resize(n);
+  for (std::size_t c = 0; c < n; ++c) x[c] = b[c] / a[c][c];
+  return true;
+}
+
+bool ball_region_exact(const std::vector<const double*>& vertices, const Box& bounds, Box& box) {
+  const std::size_t d = bounds.dim;
+  std::vector<std::vector<mpq_class>> a(d, std::vector<mpq_class>(d));
+  std::vector<mpq_class> b(d), x;
+  for (std::size_t i = 0; i < d; ++i) {
+    b[i] = 0;
+    for (std::size_t k = 0; k < d; ++k) {
+      a[i][k] = mpq_class(vertices[i + 1][k]) - mpq_class(vertices[0][k]);
+      b[i] += a[i][k] * a[i][k] / 2;
+    }
+  }
+  if (!solve_exact(a, b, x)) return false;
+  std::vector<mpq_class> centre(d), gap(d);
+  mpq_class radius2 = 0, gaps = 0;
+  for (std::size_t k = 0; k < d; ++k) {
+    centre[k] = x[k] + mpq_class(vertices[0][k]);
+    radius2 += x[k] * x[k];
+    mpq_class nearest = centre[k];
+    if (nearest < bounds.lo[k]) nearest = bounds.lo[k];
+    if (nearest > bounds.hi[k]) nearest = bounds.hi[k];
+    gap[k] = (nearest - centre[k]) * (nearest - centre[k]);
+    gaps += gap[k];
+  }
+  box = bounds;
+  for (std::size_t k = 0; k < d; ++k) {
+    mpq_class room = radius2 - (gaps - gap[k]);
+    if (room < 0) room = 0;
+    const mpq_class reach = sqrt_up(room);
+    box.lo[k] = std::max(bounds.lo[k], down_exact(centre[k] - reach));
+    box.hi[k] = std::min(bounds.hi[k], up_exact(centre[k] + reach));
+    if (box.lo[k] > box.hi[k]) return false;
+  }
+  return true;
+}
+
+bool beyond_region_exact(const std::vector<const double*>& facet, const double* inside, const Box& bounds, Box& box) {
+  const std::size_t d = bounds.dim;
+  std::vector<std::vector<mpq_class>> a(d, std::vector<mpq_class>(d));
+  std::vector<mpq_class> b(d, mpq_class(0)), n;
+  for (std::size_t i = 0; i < d; ++i) {
+    const double* v = i + 1 < d ? facet[i + 1] : inside;
+    for (std::size_t k = 0; k < d; ++k) a[i][k] = mpq_class(v[k]) - mpq_class(facet[0][k]);
+  }
+  b[d - 1] = -1;
+  if (!solve_exact(a, b, n)) return false;
+  std::vector<mpq_class> best(d);
+  mpq_class total = 0;
+  for (std::size_t k = 0; k < d; ++k) {
+    const mpq_class low = n[k] * (mpq_class(bounds.lo[k]) - mpq_class(facet[0][k]));
+    const mpq_class high = n[k] * (mpq_class(bounds.hi[k]) - mpq_class(facet[0][k]));
+    best[k] = low > high ? low : high;
+    total += best[k];
+  }
+  box = bounds;
+  for (std::size_t k = 0; k < d; ++k) {
+    if (n[k] == 0) continue;
+    const mpq_class bound = mpq_class(facet[0][k]) - (total - best[k]) / n[k];
+    if (n[k] > 0) box.lo[k] = std::max(bounds.lo[k], down_exact(bound));
+    else box.hi[k] = std::min(bounds.hi[k], up_exact(bound));
+    if (box.lo[k] > box.hi[k]) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 Box Box::filled(std::size_t dim, double low, double high) {
@@ -244,13 +347,16 @@ bool Box::contains_point(const double* p) const {
 
 Box ball_region(const std::vector<const double*>& vertices, const Box& bounds) {
   Box box;
-  if (ball_region_in<double>(vertices, bounds, box) || ball_region_in<long double>(vertices, bounds, box)) return box;
+  if (ball_region_in<double>(vertices, bounds, box) || ball_region_in<long double>(vertices, bounds, box) ||
+      ball_region_exact(vertices, bounds, box))
+    return box;
   return bounds;
 }
 
 Box beyond_region(const std::vector<const double*>& facet, const double* inside, const Box& bounds) {
   Box box;
-  if (beyond_region_in<double>(facet, inside, bounds, box) || beyond_region_in<long double>(facet, inside, bounds, box))
+  if (beyond_region_in<double>(facet, inside, bounds, box) || beyond_region_in<long double>(facet, inside, bounds, box) ||
+      beyond_region_exact(facet, inside, bounds, box))
     return box;
   return bounds;
 }

@@ -8,8 +8,9 @@
 // hull when the process holds every point in the closed half-space beyond it (within the
 // bounding box). These functions give boxes that contain those regions: computed in doubles,
 // then enlarged by a bound on their rounding, so that a box may be larger than its region but
-// not smaller. Where that bound is not small (a nearly flat simplex or facet), the box is the
-// whole bounding box.
+// not smaller. Where that bound is not small (a nearly flat simplex or facet), they are
+// computed again in long double, and then in rational arithmetic; only for a simplex or facet
+// that is flat in exact terms is the box the whole bounding box.
 #pragma once
 
 #include <array>
