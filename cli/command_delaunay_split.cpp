@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <sstream>
+#include <charconv>
 #include <string>
 #include <vector>
 
@@ -83,11 +83,15 @@ void write_qhull_together(const Processes& group, const Agreement& agree, const 
   const long long total = group.sum(static_cast<long long>(simplices.size() / width));
   std::string text;
   agree.run([&] {
-    std::ostringstream rows;
-    write_index_rows(rows, simplices, dim + 1);
-    text = rows.str();
-    text.erase(0, text.find('\n') + 1);  // the count line: process 0 writes the whole count
-    if (group.rank() == 0) text.insert(0, std::to_string(total) + "\n");
+    // write_index_rows' layout: process 0 writes the count line, every process its rows.
+    if (group.rank() == 0) text = std::to_string(total) + "\n";
+    text.reserve(text.size() + simplices.size() * 12);
+    char digits[16];
+    for (std::size_t i = 0; i < simplices.size(); ++i) {
+      const auto end = std::to_chars(digits, digits + sizeof digits, simplices[i]).ptr;
+      text.append(digits, end);
+      text.push_back((i + 1) % width == 0 ? '\n' : ' ');
+    }
   });
   const std::string temporary = output + ".drange-split.tmp";
   const std::string failed = group.write_in_rank_order(temporary, text);

@@ -42,6 +42,17 @@ using Vector = std::array<Real, kMax>;
 template <class Real>
 using Matrix = std::array<Real, kMax * kMax>;
 
+// Whether the rounding bound widened `box` much beyond the region as computed (`tight`): then
+// the computation is repeated more precisely. A flat simplex's circumball is huge, and its cap
+// within the bounds, thin but wide, is very sensitive to the radius.
+bool loose(const Box& box, const Box& tight, const Box& bounds) {
+  for (std::size_t k = 0; k < bounds.dim; ++k) {
+    const double allowed = 1e-6 * (bounds.hi[k] - bounds.lo[k]);
+    if (tight.lo[k] - box.lo[k] > allowed || box.hi[k] - tight.hi[k] > allowed) return true;
+  }
+  return false;
+}
+
 template <class Real>
 bool solve(Matrix<Real> a, Vector<Real>& x, const Vector<Real>& b, std::size_t n, Real& inverse_norm) {
   std::array<std::size_t, kMax> pivot{};
@@ -144,6 +155,7 @@ bool ball_region_in(const std::vector<const double*>& vertices, const Box& bound
   // The true ball lies in the computed centre's ball of radius (true radius + centre error),
   // and the true radius is at most the computed one plus the centre error; the rest covers the
   // rounding of this arithmetic.
+  const Real computed = radius;
   radius = radius * (1 + 16 * eps) + 2 * centre_error + 16 * dd * eps * scale;
   if (!std::isfinite(radius)) return false;
   // The ball's part within the bounds, axis by axis: the other coordinates as near the centre as
@@ -155,16 +167,20 @@ bool ball_region_in(const std::vector<const double*>& vertices, const Box& bound
     gap[k] = (nearest - centre[k]) * (nearest - centre[k]);
     gaps += gap[k];
   }
-  box = bounds;
-  for (std::size_t k = 0; k < d; ++k) {
-    // The vertices are in the ball and the bounds, so the room is not negative but for rounding.
-    const Real room = std::max(Real(0), radius * radius - (gaps - gap[k]) * (1 - 8 * dd * eps));
-    const Real reach = std::sqrt(room) * (1 + 8 * eps) + 8 * eps * scale;
-    box.lo[k] = std::max(bounds.lo[k], down(centre[k] - reach));
-    box.hi[k] = std::min(bounds.hi[k], up(centre[k] + reach));
-    if (box.lo[k] > box.hi[k]) return false;
-  }
-  return true;
+  const auto cap = [&](Real r, Real pad, Box& out) {
+    out = bounds;
+    for (std::size_t k = 0; k < d; ++k) {
+      // The vertices are in the ball and the bounds: the room is not negative but for rounding.
+      const Real room = std::max(Real(0), r * r - (gaps - gap[k]) * (1 - pad * dd * eps));
+      const Real reach = std::sqrt(room) * (1 + pad * eps) + pad * eps * scale;
+      out.lo[k] = std::max(bounds.lo[k], down(centre[k] - reach));
+      out.hi[k] = std::min(bounds.hi[k], up(centre[k] + reach));
+      if (out.lo[k] > out.hi[k]) return false;
+    }
+    return true;
+  };
+  Box tight;
+  return cap(radius, 8, box) && cap(computed, 0, tight) && !loose(box, tight, bounds);
 }
 
 template <class Real>
@@ -202,18 +218,22 @@ bool beyond_region_in(const std::vector<const double*>& facet, const double* ins
     best[k] = std::max(n[k] * (Real(bounds.lo[k]) - facet[0][k]), n[k] * (Real(bounds.hi[k]) - facet[0][k]));
     total += best[k];
   }
-  box = bounds;
-  for (std::size_t k = 0; k < d; ++k) {
-    if (n[k] == 0) continue;
-    const Real need = -slack - (total - best[k]) * (1 + 8 * dd * eps) - 8 * dd * eps * std::fabs(total);
-    const Real bound = facet[0][k] + need / n[k];
-    if (!std::isfinite(bound)) continue;
-    const Real wiggle = 8 * eps * (std::fabs(bound) + extent);
-    if (n[k] > 0) box.lo[k] = std::max(bounds.lo[k], down(bound - wiggle));
-    else box.hi[k] = std::min(bounds.hi[k], up(bound + wiggle));
-    if (box.lo[k] > box.hi[k]) return false;
-  }
-  return true;
+  const auto part = [&](Real relax, Real pad, Box& out) {
+    out = bounds;
+    for (std::size_t k = 0; k < d; ++k) {
+      if (n[k] == 0) continue;
+      const Real need = -relax - (total - best[k]) * (1 + pad * dd * eps) - pad * dd * eps * std::fabs(total);
+      const Real bound = facet[0][k] + need / n[k];
+      if (!std::isfinite(bound)) continue;
+      const Real wiggle = pad * eps * (std::fabs(bound) + extent);
+      if (n[k] > 0) out.lo[k] = std::max(bounds.lo[k], down(bound - wiggle));
+      else out.hi[k] = std::min(bounds.hi[k], up(bound + wiggle));
+      if (out.lo[k] > out.hi[k]) return false;
+    }
+    return true;
+  };
+  Box tight;
+  return part(slack, 8, box) && part(0, 0, tight) && !loose(box, tight, bounds);
 }
 
 // The last resort, for simplices and facets too flat for long double: the centre or normal in
