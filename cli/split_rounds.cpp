@@ -12,14 +12,17 @@
 #include "drange/errors.hpp"
 #include "drange/hull.hpp"
 #include "split_blocks.hpp"
+#include "util/check_points.hpp"
 
 namespace drange::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The sample that places the splits: about this many points in all.
+// The sample that places the splits: about this many points in all, and at least this many per
+// block (a quantile from k sample points is off by about 1/sqrt(k) of the block's count).
 constexpr std::int64_t kSample = 1 << 14;
+constexpr std::int64_t kSamplePerBlock = 1 << 10;
 // The ghost layer's width in mean spacings: wide enough that most stars near a block's side are
 // decided in the first round, thin next to the block.
 constexpr double kGhostSpacings = 3.0;
@@ -263,10 +266,17 @@ SplitPart triangulate_share(PointShare share, const Processes& group, const Agre
   const int dim = share.points.dim;
   const auto d = static_cast<std::size_t>(dim);
   const auto n = static_cast<std::size_t>(group.count());
+  // The engine's own limits, on the whole input (every process knows its dimension and count, so
+  // all throw alike): the dimension, and 32-bit ids. With no coordinates to read, check_points
+  // stops at these.
+  util::check_points(PointsView(nullptr, 0, dim), "triangulates");
+  if (share.total >= std::numeric_limits<std::int32_t>::max())
+    util::check_points(PointsView(nullptr, static_cast<std::size_t>(share.total), dim), "triangulates");
   const Box bounds = bounds_of(share, group);
 
   // The blocks, from a sample that takes every stride-th point of the input.
-  const std::int64_t stride = std::max<std::int64_t>(1, share.total / kSample);
+  const std::int64_t stride =
+      std::max<std::int64_t>(1, share.total / std::max<std::int64_t>(kSample, kSamplePerBlock * group.count()));
   std::vector<double> sample;
   for (std::size_t i = 0; i < share.points.size(); ++i)
     if ((share.first + static_cast<std::int64_t>(i)) % stride == 0)
