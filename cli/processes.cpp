@@ -118,6 +118,128 @@ std::vector<double> Processes::gather(const std::vector<double>& values) const {
   return values;
 }
 
+long long Processes::sum(long long value) const {
+  long long result = value;
+#ifdef DRANGE_HAVE_MPI
+  if (joined_) MPI_Allreduce(&value, &result, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+#endif
+  return result;
+}
+
+long long Processes::sum_before(long long value) const {
+  long long result = 0;
+#ifdef DRANGE_HAVE_MPI
+  if (joined_) MPI_Exscan(&value, &result, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  if (rank_ == 0) result = 0;  // MPI_Exscan leaves rank 0's result undefined
+#endif
+  (void)value;
+  return result;
+}
+
+std::vector<double> Processes::reduce(std::vector<double> values, Reduction how) const {
+#ifdef DRANGE_HAVE_MPI
+  if (joined_) {
+    const MPI_Op op = how == Reduction::Min ? MPI_MIN : how == Reduction::Max ? MPI_MAX : MPI_SUM;
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, op, MPI_COMM_WORLD);
+  }
+#endif
+  (void)how;
+  return values;
+}
+
+namespace {
+
+int checked_count(std::size_t n, const Processes& group) {
+  // Every process learns whether any count is too large, so that all refuse together.
+  const int too_large = group.max(n > static_cast<std::size_t>(INT32_MAX) ? 1 : 0);
+  if (too_large != 0) throw UsageError("a message between processes exceeds 2^31 - 1 values: use more processes");
+  return static_cast<int>(n);
+}
+
+}  // namespace
+
+std::vector<double> Processes::all_gather(const std::vector<double>& values) const {
+#ifdef DRANGE_HAVE_MPI
+  if (joined_) {
+    const int mine = checked_count(values.size(), *this);
+    std::vector<int> sizes(static_cast<std::size_t>(count_)), offsets(static_cast<std::size_t>(count_));
+    MPI_Allgather(&mine, 1, MPI_INT, sizes.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    long long total = 0;
+    for (int r = 0; r < count_; ++r) {
+      offsets[static_cast<std::size_t>(r)] = static_cast<int>(total);
+      total += sizes[static_cast<std::size_t>(r)];
+    }
+    checked_count(static_cast<std::size_t>(total), *this);
+    std::vector<double> all(static_cast<std::size_t>(total));
+    MPI_Allgatherv(values.data(), mine, MPI_DOUBLE, all.data(), sizes.data(), offsets.data(), MPI_DOUBLE,
+                   MPI_COMM_WORLD);
+    return all;
+  }
+#endif
+  return values;
+}
+
+std::vector<double> Processes::exchange(const std::vector<std::vector<double>>& to_each,
+                                        std::vector<std::size_t>& from_each) const {
+  from_each.assign(static_cast<std::size_t>(count_), 0);
+#ifdef DRANGE_HAVE_MPI
+  if (joined_) {
+    const auto n = static_cast<std::size_t>(count_);
+    std::vector<int> send_sizes(n), send_offsets(n), receive_sizes(n), receive_offsets(n);
+    std::size_t send_total = 0;
+    for (std::size_t r = 0; r < n; ++r) send_total += to_each[r].size();
+    checked_count(send_total, *this);
+    std::vector<double> sending;
+    sending.reserve(send_total);
+    for (std::size_t r = 0; r < n; ++r) {
+      send_sizes[r] = static_cast<int>(to_each[r].size());
+      send_offsets[r] = static_cast<int>(sending.size());
+      sending.insert(sending.end(), to_each[r].begin(), to_each[r].end());
+    }
+    MPI_Alltoall(send_sizes.data(), 1, MPI_INT, receive_sizes.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    std::size_t receive_total = 0;
+    for (std::size_t r = 0; r < n; ++r) {
+      receive_offsets[r] = static_cast<int>(std::min<std::size_t>(receive_total, INT32_MAX));
+      receive_total += static_cast<std::size_t>(receive_sizes[r]);
+      from_each[r] = static_cast<std::size_t>(receive_sizes[r]);
+    }
+    checked_count(receive_total, *this);
+    std::vector<double> received(receive_total);
+    MPI_Alltoallv(sending.data(), send_sizes.data(), send_offsets.data(), MPI_DOUBLE, received.data(),
+                  receive_sizes.data(), receive_offsets.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+    return received;
+  }
+#endif
+  from_each[0] = to_each[0].size();
+  return to_each[0];
+}
+
+std::string Processes::write_in_rank_order(const std::string& path, const std::string& text) const {
+#ifdef DRANGE_HAVE_MPI
+  if (joined_) {
+    const long long offset = sum_before(static_cast<long long>(text.size()));
+    MPI_File file;
+    int failed = MPI_File_open(MPI_COMM_WORLD, path.c_str(), MPI_MODE_CREATE | MPI_MODE_WRONLY, MPI_INFO_NULL, &file);
+    if (max(failed != MPI_SUCCESS ? 1 : 0) != 0) return "cannot create '" + path + "'";
+    failed = MPI_File_set_size(file, 0);
+    // Pieces of at most 1 GiB: MPI's counts are ints.
+    constexpr std::size_t kPiece = std::size_t{1} << 30;
+    for (std::size_t at = 0; failed == MPI_SUCCESS && at < text.size(); at += kPiece) {
+      const int count = static_cast<int>(std::min(kPiece, text.size() - at));
+      MPI_Status status;
+      failed = MPI_File_write_at(file, static_cast<MPI_Offset>(offset + static_cast<long long>(at)), text.data() + at,
+                                 count, MPI_CHAR, &status);
+    }
+    if (MPI_File_close(&file) != MPI_SUCCESS) failed = 1;
+    if (max(failed != MPI_SUCCESS ? 1 : 0) != 0) return "cannot write '" + path + "'";
+    return std::string();
+  }
+#endif
+  (void)path;
+  (void)text;
+  return "no processes to write with";
+}
+
 const Processes& processes() { return *the_processes; }
 
 }  // namespace drange::cli

@@ -41,12 +41,15 @@ Triangulation run(const PointCloud& points, int threads, bool seeds = true) {
   return drange::delaunay(points, options);
 }
 
-// Every thread count gives the serial run's arrays, byte for byte, and its statistics (all
-// but the times, the thread count and the wasted searches); the serial result is valid.
-// The seed candidates (variant no-seed leaves them out) come from the recent searches of all
-// threads, in the order the threads happened to make them, so with them the work counters
-// (calls, points tested, candidates, exact fallbacks) depend on the timing; without them,
-// they do not.
+// Every thread count gives the serial run's arrays, byte for byte, and the statistics of the
+// result (points, simplices, hull facets); the serial result is valid. From 4D on, where the
+// searches run ahead on the threads of one serial loop, the statistics of the work agree too
+// (all but the times, the thread count and the wasted searches), except that the seed
+// candidates (variant no-seed leaves them out) come from the recent searches of all threads,
+// in the order the threads happened to make them, so with them the work counters (calls,
+// points tested, candidates, exact fallbacks) depend on the timing. In 2D and 3D the search
+// runs in blocks, more for more threads (block_search.hpp): the work and the largest
+// frontier depend on the cut.
 void expect_same_for_every_thread_count(const std::string& name, const PointCloud& points, bool seeds);
 
 void expect_same_for_every_thread_count(const std::string& what, const PointCloud& points) {
@@ -77,6 +80,7 @@ void expect_same_for_every_thread_count(const std::string& name, const PointClou
     EXPECT_EQ(a.distinct_points, b.distinct_points) << at;
     EXPECT_EQ(a.simplices, b.simplices) << at;
     EXPECT_EQ(a.hull_facets, b.hull_facets) << at;
+    if (points.dim <= 3) continue;
     EXPECT_EQ(a.debug.max_open_facets, b.debug.max_open_facets) << at;
     if (seeds) continue;
     EXPECT_EQ(a.search_calls, b.search_calls) << at;

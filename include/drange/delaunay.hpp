@@ -48,12 +48,12 @@ struct Options {
   std::function<void(std::size_t simplices)> progress;
   // Threads to use: 0 means one per hardware thread (std::thread::hardware_concurrency), 1 the
   // serial run. The result, simplex numbers included, is the same for every count; so are the
-  // statistics, except the times and the search's work counters (Statistics::search_calls, and
-  // points_tested, candidates, exact_fallbacks and wasted_searches in Statistics::debug: the
-  // seed candidates, shared by the threads, depend on the order in which the threads happen to
-  // search). With more than
-  // one, the facets' searches run on helper threads, ahead of the calling thread, which records
-  // the simplices in the serial order and is the only one that calls `progress`. A program that runs several
+  // statistics of the result, not those of the work (the times, Statistics::search_calls and
+  // Statistics::debug's counters). In 2D and 3D the points are cut into blocks that the
+  // threads wrap on their own, and the simplices are listed in a canonical order that does
+  // not depend on the cut; from 4D on the facets' searches run on helper threads, ahead of
+  // the calling thread, which records the simplices in the serial order. Only the calling
+  // thread calls `progress`. A program that runs several
   // triangulations at once on its own threads should give each 1 (or its share of the cores):
   // with 0, each call starts one thread per core, and the cores are oversubscribed.
   int threads = 0;
@@ -80,6 +80,11 @@ struct Statistics {
   double seconds_first_facet = 0;    // gift wrapping to the first facet
   double seconds_choice = 0;         // Options::algorithm "auto": the probe that chose the algorithm
   double seconds_search = 0;         // the main loop: searches, facet table, simplices and neighbours
+  // The search's threads: each one's busy time (in 2D and 3D, its blocks' wrappings and
+  // sorts; otherwise one entry, the search's loop), and the critical path: the busiest
+  // thread's time plus what followed it on the calling thread (the blocks' join).
+  std::vector<double> seconds_busy;
+  double seconds_critical_path = 0;
   double seconds_total = 0;
   std::size_t peak_rss_bytes = 0;    // process peak resident memory at the end of the run
 

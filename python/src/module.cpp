@@ -57,6 +57,8 @@ py::dict statistics_dict(const Statistics& s) {
   d["seconds_first_facet"] = s.seconds_first_facet;
   d["seconds_choice"] = s.seconds_choice;
   d["seconds_search"] = s.seconds_search;
+  d["seconds_busy"] = s.seconds_busy;
+  d["seconds_critical_path"] = s.seconds_critical_path;
   d["seconds_total"] = s.seconds_total;
   d["peak_rss_bytes"] = s.peak_rss_bytes;
   d["debug"] = debug;

@@ -28,23 +28,29 @@ StarWrapper::StarWrapper(const PointStore& points, FacetSearch& search, const Fi
       facets_(static_cast<std::size_t>((points.dim + 1) * points.dim)),
       sides_(static_cast<std::size_t>(points.dim + 1)) {
   SearchCounters ignored;
-  current_ = FoundSimplex{first.ids, first.sigma, search_.find_apex(first.ids.data(), first.sigma, ignored)};
+  current_ = found_simplex(first.ids.data(), first.sigma, search_.find_apex(first.ids.data(), first.sigma, ignored));
   if (current_.apex < 0) throw InternalError("delaunay stars: the first facet has no simplex on its inner side");
 }
 
+FoundSimplex StarWrapper::found_simplex(const std::int32_t* facet, int sigma, std::int32_t apex) const {
+  FoundSimplex s;
+  std::copy_n(facet, d_, s.facet.begin());
+  s.sigma = sigma;
+  s.apex = apex;
+  return s;
+}
+
 void StarWrapper::vertices_of(const FoundSimplex& s, std::int32_t* out) const {
-  std::copy(s.facet.begin(), s.facet.end(), out);
+  std::copy_n(s.facet.begin(), d_, out);
   if (s.sigma < 0) std::swap(out[0], out[1]);
   out[d_] = s.apex;
 }
 
 void StarWrapper::facets_of(const FoundSimplex& s) {
   const auto d = static_cast<std::size_t>(d_);
-  std::vector<std::int32_t> open_side(d);
-  simplex_other_facets(s.facet.data(), d_, s.apex, s.sigma < 0, facets_.data(), open_side.data());
-  std::copy(open_side.begin(), open_side.end(), sides_.begin());
+  simplex_other_facets(s.facet.data(), d_, s.apex, s.sigma < 0, facets_.data(), sides_.data());
   // Facet d omits the apex: the facet the simplex was found from, whose open side held the apex.
-  std::copy(s.facet.begin(), s.facet.end(), facets_.begin() + static_cast<std::ptrdiff_t>(d * d));
+  std::copy_n(s.facet.begin(), d_, facets_.begin() + static_cast<std::ptrdiff_t>(d * d));
   sides_[d] = -s.sigma;
 }
 
@@ -68,7 +74,7 @@ void StarWrapper::walk_to(std::int32_t p, SearchCounters& counters) {
       const std::int32_t apex = search_.find_apex(facet, sides_[f], counters);
       // p lies in the hull, never strictly beyond a hull facet.
       if (apex < 0) throw InternalError("delaunay stars: the walk to point " + std::to_string(p) + " left the hull");
-      current_ = FoundSimplex{std::vector<std::int32_t>(facet, facet + d), sides_[f], apex};
+      current_ = found_simplex(facet, sides_[f], apex);
       crossed = true;
     }
     if (!crossed)
@@ -78,54 +84,140 @@ void StarWrapper::walk_to(std::int32_t p, SearchCounters& counters) {
 }
 
 void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std::int32_t>& rows,
-                        SearchCounters& counters, std::vector<std::int32_t>& hull_facets) {
+                        SearchCounters& counters, std::vector<std::int32_t>& hull_facets, std::vector<std::int32_t>* links) {
   const auto d = static_cast<std::size_t>(d_);
-  std::vector<char> is_wanted(static_cast<std::size_t>(points_.size), 0), covered(is_wanted.size(), 0);
-  for (const std::int32_t p : wanted) is_wanted[static_cast<std::size_t>(p)] = 1;
+  std::vector<std::int32_t> order(wanted);
+  std::sort(order.begin(), order.end());
+  order.erase(std::unique(order.begin(), order.end()), order.end());
+  // The wanted points: a range of ids (a block) is told by two comparisons, other sets by a
+  // flag per point.
+  const bool range = !order.empty() && order.back() - order.front() + 1 == static_cast<std::int32_t>(order.size());
+  const std::int32_t low = order.empty() ? 0 : order.front(), count = static_cast<std::int32_t>(order.size());
+  std::vector<char> is_wanted(range ? 0 : static_cast<std::size_t>(points_.size), 0), covered(static_cast<std::size_t>(points_.size), 0);
+  if (!range)
+    for (const std::int32_t p : order) is_wanted[static_cast<std::size_t>(p)] = 1;
+  const auto wanted_point = [&](std::int32_t v) {
+    return range ? static_cast<std::uint32_t>(v - low) < static_cast<std::uint32_t>(count) : is_wanted[static_cast<std::size_t>(v)] != 0;
+  };
   // The stars' open facets through a wanted point (found on one side, not yet on the other),
   // and the queue of those to search, least smallest vertex id first: the whole construction's
   // spatial order (ids follow the kd-tree, so consecutive searches read nearby nodes). One
   // table for every start: a facet through a wanted point is reached from both sides within
-  // one wrapping.
+  // one wrapping. Both know the facet's first side (row, facet) for the links.
   FacetTable open(d_);
   SpatialFacetQueue queue(d_, points_.size, kStarBlockShift);
   std::vector<std::int32_t> vertices(d + 1), facet(d);
-  // Records a simplex; `searched`: the facet it was found from, closed already.
-  const auto record = [&](const FoundSimplex& s, bool searched) {
+  const auto link = [&](FacetOwner a, FacetOwner b) {
+    (*links)[static_cast<std::size_t>(a.simplex) * (d + 1) + static_cast<std::size_t>(a.face)] = b.simplex;
+    (*links)[static_cast<std::size_t>(b.simplex) * (d + 1) + static_cast<std::size_t>(b.face)] = a.simplex;
+  };
+  // A simplex is recorded in two steps: `found` writes its row and asks the cache for its
+  // facets' table slots; `settle`, a search later when the slots have arrived, opens the facets
+  // or closes those open already. Between the two, only a facet of that simplex can be
+  // affected by the pending settle, and the loop settles first when its next facet is one.
+  struct Pending {
+    bool waiting = false;
+    std::int32_t row = 0;
+    FacetOwner from{-1, -1};  // the facet it was found from (its first side), or none
+    std::uint32_t hashes[kMaxDimension + 1];
+    bool opened[kMaxDimension + 1];
+  } pending;
+  const auto found = [&](const FoundSimplex& s, const FacetOwner* from) {
+    pending.waiting = true;
+    pending.row = static_cast<std::int32_t>(rows.size() / (d + 1));
+    pending.from = from ? *from : FacetOwner{-1, -1};
     vertices_of(s, vertices.data());
     rows.insert(rows.end(), vertices.begin(), vertices.end());
+    if (links) links->resize(rows.size(), kNotOpened);
     for (const std::int32_t v : vertices) covered[static_cast<std::size_t>(v)] = 1;
     facets_of(s);
     for (std::size_t f = 0; f <= d; ++f) {
-      if (searched && f == d) continue;
       const std::int32_t* ids = &facets_[f * d];
-      if (std::none_of(ids, ids + d, [&](std::int32_t v) { return is_wanted[static_cast<std::size_t>(v)] != 0; }))
-        continue;  // it leads out of the stars
-      const std::uint32_t hash = facet_hash(ids, d_);
-      FacetOwner other{};
-      if (open.close_or_open(ids, hash, FacetOwner{0, 0}, &other)) continue;  // both sides found
-      queue.push(ids, hash, FacetOwner{0, 0}, sides_[f], -1);
+      // Facet d of a simplex found from a facet is that facet, closed already; a facet through
+      // no wanted point leads out of the stars and is left alone.
+      pending.opened[f] = !(from && f == d) && std::any_of(ids, ids + d, [&](std::int32_t v) {
+        return wanted_point(v);
+      });
+      if (!pending.opened[f]) continue;
+      pending.hashes[f] = facet_hash(ids, d_);
+      open.prefetch(pending.hashes[f]);
     }
   };
-  std::vector<std::int32_t> order(wanted);
-  std::sort(order.begin(), order.end());
-  FacetInfo info{};
+  const auto settle = [&] {
+    if (!pending.waiting) return;
+    pending.waiting = false;
+    for (std::size_t f = 0; f <= d; ++f) {
+      const FacetOwner here{pending.row, static_cast<std::int32_t>(f)};
+      if (f == d && pending.from.simplex >= 0 && links) link(pending.from, here);
+      if (!pending.opened[f]) continue;
+      const std::int32_t* ids = &facets_[f * d];
+      FacetOwner other{};
+      if (open.close_or_open(ids, pending.hashes[f], here, &other)) {  // both sides found
+        if (links) link(other, here);
+        continue;
+      }
+      queue.push(ids, pending.hashes[f], here, sides_[f], -1);
+    }
+  };
+  // Whether the pending simplex's settle would open or close `ids` (of hash `hash`).
+  const auto pending_facet = [&](const std::int32_t* ids, std::uint32_t hash) {
+    if (!pending.waiting) return false;
+    for (std::size_t f = 0; f <= d; ++f)
+      if (pending.opened[f] && pending.hashes[f] == hash && std::equal(ids, ids + d, &facets_[f * d])) return true;
+    return false;
+  };
+  // More simplices than n points can have: a wrong apex made them overlap (simplex_estimate.hpp).
+  const std::size_t limit = simplex_upper_bound(d_, static_cast<std::size_t>(points_.size)) * (d + 1);
+  // Facets leave the queue a few turns ahead, into a ring, so that each one's table slot is
+  // asked for before its turn reads it. A facet closed while in the ring is skipped at its
+  // turn, as one closed in the queue; the simplices do not depend on the order of the turns.
+  constexpr std::size_t kAhead = 8;
+  std::vector<std::int32_t> ring(kAhead * d);
+  FacetInfo ring_info[kAhead];
+  std::size_t first = 0, filled = 0;  // the ring holds turns first..filled-1
+  std::size_t reported = rows.size();  // the rows reported so far end here
+  const auto report = [&](bool rest) {
+    if (!report_ || rows.size() == reported || (!rest && rows.size() - reported < report_every_ * (d + 1))) return;
+    report_(&rows[reported], (rows.size() - reported) / (d + 1));
+    reported = rows.size();
+  };
   for (const std::int32_t p : order) {
     if (covered[static_cast<std::size_t>(p)]) continue;
     walk_to(p, counters);
-    record(current_, false);
-    while (!queue.empty()) {
-      queue.pop(facet.data(), info);
+    found(current_, nullptr);
+    settle();
+    for (;;) {
+      for (; filled < first + kAhead && !queue.empty(); ++filled) {
+        const std::size_t slot = filled % kAhead;
+        queue.pop(&ring[slot * d], ring_info[slot]);
+        open.prefetch(ring_info[slot].hash);
+      }
+      if (first == filled) {
+        if (!pending.waiting) break;
+        settle();  // its facets may refill the queue
+        continue;
+      }
+      const std::size_t slot = first++ % kAhead;
+      std::copy_n(&ring[slot * d], d, facet.begin());
+      const FacetInfo info = ring_info[slot];
+      max_open_facets_ = std::max(max_open_facets_, open.size());
+      if (rows.size() > limit) throw InternalError("delaunay stars: more simplices than the points can have");
+      if (pending_facet(facet.data(), info.hash)) settle();
       // Closed meanwhile (its other simplex found from another facet): nothing to search.
       if (!open.remove(facet.data(), info.hash)) continue;
       const std::int32_t apex = search_.find_apex(facet.data(), info.sigma, counters);
+      settle();
       if (apex < 0) {
         hull_facets.insert(hull_facets.end(), facet.begin(), facet.end());
+        if (links)
+          (*links)[static_cast<std::size_t>(info.owner.simplex) * (d + 1) + static_cast<std::size_t>(info.owner.face)] = kHullSide;
         continue;
       }
-      record(FoundSimplex{facet, info.sigma, apex}, true);
+      found(found_simplex(facet.data(), info.sigma, apex), &info.owner);
+      report(false);
     }
   }
+  report(true);
 }
 
 }  // namespace drange::engine

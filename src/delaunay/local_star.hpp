@@ -20,20 +20,23 @@
 // same perturbation, so the star is exactly the full triangulation's, vertex set for vertex set.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "delaunay/facet_search.hpp"
 #include "delaunay/first_facet.hpp"
 #include "delaunay/point_store.hpp"
+#include "drange/points.hpp"
 
 namespace drange::engine {
 
-// A simplex as the search finds it: its facet's sorted ids, that facet's open side (where the
+// A simplex as the search finds it: its facet's sorted ids (the first d of `facet`), that facet's open side (where the
 // apex lies) and the apex. Its vertices, positively oriented, are the facet's ids with the
 // first two exchanged when sigma < 0, then the apex (as the full construction records it).
 struct FoundSimplex {
-  std::vector<std::int32_t> facet;
+  std::array<std::int32_t, kMaxDimension> facet;
   int sigma = 1;
   std::int32_t apex = -1;
 };
@@ -49,8 +52,21 @@ class StarWrapper {
   // the wrapping finds them, the points taken in increasing id order (the kd-tree's, so that
   // the walks between them are short). Counts into `counters` the search's work and into `hull_facets`
   // the stars' facets on the hull. The cost is that of the simplices found and the walks.
+  // With `links`, links[r * (d+1) + f] is what lies across facet f (opposite vertex f) of row r:
+  // the row on the other side, kHullSide when f is on the hull, or kNotOpened when f holds no
+  // wanted point (the wrapping left it alone: it leads out of the stars).
   void stars(const std::vector<std::int32_t>& wanted, std::vector<std::int32_t>& rows, SearchCounters& counters,
-             std::vector<std::int32_t>& hull_facets);
+             std::vector<std::int32_t>& hull_facets, std::vector<std::int32_t>* links = nullptr);
+  static constexpr std::int32_t kNotOpened = -1;
+  static constexpr std::int32_t kHullSide = -2;
+  // Calls `report(rows, count)` with each `every` simplices that stars() appends, as they are
+  // appended, and with the rest when it returns; an exception from it ends stars().
+  void report_rows(std::size_t every, std::function<void(const std::int32_t*, std::size_t)> report) {
+    report_every_ = every;
+    report_ = std::move(report);
+  }
+  // The most facets open at once in the wrappings so far (Statistics::Debug::max_open_facets).
+  std::size_t max_open_facets() const { return max_open_facets_; }
 
  private:
   void walk_to(std::int32_t p, SearchCounters& counters);
@@ -58,13 +74,17 @@ class StarWrapper {
   // ids into facets_ (d per facet), each one's outward side into sides_.
   void facets_of(const FoundSimplex& s);
   void vertices_of(const FoundSimplex& s, std::int32_t* out) const;
+  FoundSimplex found_simplex(const std::int32_t* facet, int sigma, std::int32_t apex) const;
 
   const PointStore& points_;
   FacetSearch& search_;
   int d_;
   FoundSimplex current_;  // the walk's simplex: the last star's first simplex
   std::vector<std::int32_t> facets_;
-  std::vector<int> sides_;
+  std::vector<std::int32_t> sides_;
+  std::size_t max_open_facets_ = 0;
+  std::size_t report_every_ = 0;
+  std::function<void(const std::int32_t*, std::size_t)> report_;
 };
 
 }  // namespace drange::engine

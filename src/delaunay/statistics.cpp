@@ -19,7 +19,16 @@ std::string Statistics::summary() const {
                 simplices ? double(debug.candidates) / double(simplices) : 0.0,
                 debug.exact_fallbacks, debug.max_open_facets, debug.shell_spheres, threads, debug.wasted_searches,
                 seconds_kdtree, seconds_first_facet, seconds_search, seconds_total, double(peak_rss_bytes) / (1 << 20), algorithm.c_str(), seconds_choice);
-  return line;
+  std::string text = line;
+  // The busy times last, a list of any length (scripts read the keys before them by position).
+  text += " time_busy=";
+  for (std::size_t t = 0; t < seconds_busy.size(); ++t) {
+    std::snprintf(line, sizeof line, "%s%.3fs", t ? "," : "", seconds_busy[t]);
+    text += line;
+  }
+  if (seconds_busy.empty()) text += "-";
+  std::snprintf(line, sizeof line, " time_critical=%.3fs", seconds_critical_path);
+  return text + line;
 }
 
 }  // namespace drange

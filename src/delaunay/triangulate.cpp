@@ -14,7 +14,10 @@
 // window and on nothing else. With Options::threads > 1, step 3 runs ahead on helper threads
 // (SearchPipeline, search_pipeline.hpp), and the sort, the kd-tree and the first facet's scans
 // are split between the threads; steps 2 and 4 (Frontier, frontier.hpp) stay on the calling
-// thread, in the serial order, so the output does not change.
+// thread, in the serial order, so the output does not change. In 2D and 3D the search runs
+// instead as blocks of points that the threads wrap on their own (block_search.hpp), each with
+// its own facet table and queue, the output in a canonical order that does not depend on the
+// cut; the serial loops serve there the choice's probe and the variants that fix an order.
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -25,6 +28,7 @@
 #include <vector>
 
 #include "delaunay/algorithm_choice.hpp"
+#include "delaunay/block_search.hpp"
 #include "delaunay/derived_facets.hpp"
 #include "delaunay/facet_queue.hpp"
 #include "delaunay/facet_search.hpp"
@@ -84,6 +88,26 @@ bool spatial_order(FacetOrder order, int d) {
 // take() reads: on a large frontier each lookup is a miss, and about half the facets popped
 // were closed while they waited, so their turn is only that lookup.
 constexpr std::uint64_t kPrefetchAhead = 4;
+
+// The blocks of the direct search (block_search.hpp): one on one thread; otherwise four per
+// thread, taken in turn, so that a thread that finishes early takes another and the join's
+// peak memory holds one small block beyond the result; none with fewer than kMinBlockPoints
+// points (a block's walk from the first facet and its boundary cost more than a small block
+// saves). The output does not depend on the count.
+constexpr std::int32_t kMinBlockPoints = 4096;
+int block_count(const engine::Team& team, std::int32_t points) {
+  const std::int32_t wanted = team.threads() == 1 ? 1 : 4 * team.threads();
+  return static_cast<int>(std::max<std::int32_t>(1, std::min<std::int32_t>(wanted, points / kMinBlockPoints)));
+}
+
+// Whether the direct search runs in blocks: in 2D and 3D, where a block's star wrapping costs
+// what the whole search does per simplex and its boundary little (from 4D on, stars are large
+// and a block's boundary holds a large part of its simplices: the searches are spread over
+// the threads by the pipeline instead); not for the choice's budgeted probe, nor when a
+// --variant fixes the facet order (fifo, spatial: the order is what they measure).
+bool in_blocks(const SearchOptions& options, int d, std::uint64_t work_budget) {
+  return d <= 3 && work_budget == 0 && options.facet_order == FacetOrder::automatic;
+}
 
 // One thread, FIFO: each facet searched when its turn comes, taken out of the queue then.
 // kBudgeted: the run stops at SearchTotals::budget (the choice's probe); a template argument,
@@ -265,6 +289,16 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
     totals.counters.calls = counters.walk_steps;
     totals.counters.points_tested = counters.conflict_tests;
     stats.debug.unfiltered_tests = counters.unfiltered_tests;
+  } else if (in_blocks(search_options, d, work_budget)) {
+    const std::uint64_t helpers_exact = team.helper_exact_evaluations(), exact = geometry::exact_evaluations();
+    const engine::BlockSearchTotals blocks = engine::search_in_blocks(
+        points, first, search_options, team, block_count(team, points.size), options.compute_neighbors, options.progress, result);
+    totals.exact = geometry::exact_evaluations() - exact + team.helper_exact_evaluations() - helpers_exact;
+    totals.counters = blocks.counters;
+    stats.seconds_busy = blocks.seconds_busy;
+    stats.seconds_critical_path = *std::max_element(blocks.seconds_busy.begin(), blocks.seconds_busy.end()) + blocks.seconds_join;
+    stats.hull_facets = blocks.hull_facets;
+    stats.debug.max_open_facets = blocks.max_open_facets;
   } else if (spatial_order(search_options.facet_order, d)) {
     Frontier<engine::SpatialFacetQueue> frontier(d, points.size, result, options.progress,
                                                  engine::SpatialFacetQueue(d, points.size, kSpatialBlockShift),
@@ -275,6 +309,10 @@ Triangulation engine::triangulate(PointsView input, const Options& options, cons
     search(frontier, first, points, search_options, team, Lookahead{0, 0}, totals);
   }
   stats.seconds_search = seconds_since(phase);
+  if (stats.seconds_busy.empty()) {  // one loop: the calling thread's is the critical path
+    stats.seconds_busy = {stats.seconds_search};
+    stats.seconds_critical_path = stats.seconds_search;
+  }
 
   // Back to the caller's numbering: one lookup per vertex of every simplex, on the threads.
   util::for_ranges(simplices.size(), team, [&](std::size_t, std::size_t begin, std::size_t end) {

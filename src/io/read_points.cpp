@@ -25,6 +25,7 @@
 #include "io/npy.hpp"
 #include "io/parse_number.hpp"
 #include "io/read_text.hpp"
+#include "io/text_points.hpp"
 #include "io/text_lines.hpp"
 #include "util/huge_pages.hpp"
 
@@ -184,29 +185,9 @@ void reserve_coordinates(std::vector<double>& coords, std::size_t points_claimed
   util::advise_huge_pages(coords.data(), coords.capacity() * sizeof(double));
 }
 
-PointCloud parse_qhull(io::LineScanner& scanner, const Layout& layout, const std::string& name) {
-  PointCloud cloud;
-  cloud.dim = layout.dim;
-  reserve_coordinates(cloud.coords, layout.count, static_cast<std::size_t>(layout.dim), scanner);
-
-  const std::string first_row_hint = " (lines 1-" + std::to_string(layout.header_line) +
-                                     " were read as a Qhull header: dimension " + std::to_string(layout.dim) +
-                                     ", " + io::count_of(layout.count, "point", "points") + ")";
-  std::vector<std::string_view> fields;
-  ContentLine line;
-  std::size_t found = 0;
-  while (scanner.next(line.text, line.number)) {
-    if (!append_plain_row(line.text, layout.dim, cloud.coords)) {
-      io::split_fields(line.text, fields);
-      parse_point_row(name, line, fields, layout.dim, found == 0 ? first_row_hint : std::string(), cloud.coords);
-    }
-    ++found;
-  }
-  if (found != layout.count) {
-    io::fail_in_file(name, "header says " + io::count_of(layout.count, "point", "points") + ", found " +
-                               std::to_string(found));
-  }
-  return cloud;
+std::string qhull_first_row_hint(const Layout& layout) {
+  return " (lines 1-" + std::to_string(layout.header_line) + " were read as a Qhull header: dimension " +
+         std::to_string(layout.dim) + ", " + io::count_of(layout.count, "point", "points") + ")";
 }
 
 // A lone integer on the first row was probably meant as a header (a count, or a dimension
@@ -218,39 +199,91 @@ std::string lone_integer_hint(const ContentLine& line, const std::vector<std::st
          "on the first line and the number of points on the second)";
 }
 
-PointCloud parse_rows(io::LineScanner& scanner, const std::string& name) {
-  PointCloud cloud;
-  std::vector<std::string_view> fields;
+// At least `wanted` content lines in `text`.
+bool has_content_lines(std::string_view text, int wanted) {
+  io::LineScanner scanner(text);
   ContentLine line;
-  bool first = true;
-  std::string hint;
-  while (scanner.next(line.text, line.number)) {
-    if (cloud.dim > 0 && append_plain_row(line.text, cloud.dim, cloud.coords)) continue;
-    io::split_fields(line.text, fields);
-    if (first) {
-      first = false;
-      if (is_header_row(fields)) continue;
-    }
-    if (cloud.dim == 0) {
-      cloud.dim = static_cast<int>(fields.size());
-      reserve_coordinates(cloud.coords, SIZE_MAX, fields.size(), scanner);
-      hint = lone_integer_hint(line, fields);
-    }
-    parse_point_row(name, line, fields, cloud.dim, hint, cloud.coords);
-  }
-  return cloud;
+  for (int k = 0; k < wanted; ++k)
+    if (!scanner.next(line.text, line.number)) return false;
+  return true;
 }
 
 PointCloud parse_text(std::string_view text, const std::string& name) {
   if (io::is_numpy_input(text, name)) return io::parse_npy_points(text, name);
-  io::LineScanner scanner(text);
-  const Layout layout = detect_layout(scanner, name);
-  PointCloud cloud = layout.qhull ? parse_qhull(scanner, layout, name) : parse_rows(scanner, name);
-  if (cloud.coords.empty()) io::fail_in_file(name, "no points");
+  const io::TextLayout layout = io::detect_text_layout(text, true, name);
+  PointCloud cloud = io::parse_text_rows(text.substr(layout.rows_begin), layout.rows_begin, layout.lines_before + 1,
+                                         layout, name);
+  io::check_text_point_count(layout, cloud.size(), name);
   return cloud;
 }
 
 }  // namespace
+
+namespace io {
+
+TextLayout detect_text_layout(std::string_view text, bool whole, const std::string& name) {
+  TextLayout result;
+  // Only complete lines: a line cut short could pass for a header or a row it is not.
+  const std::size_t last_newline = text.rfind('\n');
+  const std::string_view lines = whole ? text : text.substr(0, last_newline == std::string_view::npos ? 0 : last_newline + 1);
+  if (!whole && !has_content_lines(lines, 3)) return result;
+  result.complete = true;
+  LineScanner scanner(lines);
+  const Layout layout = detect_layout(scanner, name);
+  ContentLine line;
+  std::vector<std::string_view> fields;
+  if (layout.qhull) {
+    result.qhull = true;
+    result.dim = layout.dim;
+    result.count = layout.count;
+    result.rows_begin = scanner.position();
+    result.lines_before = layout.header_line;
+    result.hint = qhull_first_row_hint(layout);
+    if (scanner.next(line.text, line.number)) result.first_row = static_cast<std::size_t>(line.text.data() - lines.data());
+    return result;
+  }
+  if (!scanner.next(line.text, line.number)) return result;  // no rows: dim 0
+  split_fields(line.text, fields);
+  if (is_header_row(fields)) {
+    result.rows_begin = scanner.position();
+    result.lines_before = line.number;
+    if (!scanner.next(line.text, line.number)) return result;
+    split_fields(line.text, fields);
+  }
+  result.first_row = static_cast<std::size_t>(line.text.data() - lines.data());
+  result.dim = static_cast<int>(fields.size());
+  result.hint = lone_integer_hint(line, fields);
+  return result;
+}
+
+PointCloud parse_text_rows(std::string_view part, std::size_t offset, std::size_t first_line, const TextLayout& layout,
+                           const std::string& name) {
+  PointCloud cloud;
+  cloud.dim = layout.dim;
+  LineScanner scanner(part, first_line, offset == 0);
+  if (layout.dim == 0) return cloud;  // no data row anywhere in the text
+  reserve_coordinates(cloud.coords, layout.qhull ? layout.count : SIZE_MAX, static_cast<std::size_t>(layout.dim),
+                      scanner);
+  const std::string no_hint;
+  std::vector<std::string_view> fields;
+  ContentLine line;
+  while (scanner.next(line.text, line.number)) {
+    if (append_plain_row(line.text, layout.dim, cloud.coords)) continue;
+    split_fields(line.text, fields);
+    const bool first = offset + static_cast<std::size_t>(line.text.data() - part.data()) == layout.first_row;
+    parse_point_row(name, line, fields, layout.dim, layout.qhull && !first ? no_hint : layout.hint, cloud.coords);
+  }
+  return cloud;
+}
+
+void check_text_point_count(const TextLayout& layout, std::size_t found, const std::string& name) {
+  if (layout.qhull && found != layout.count) {
+    fail_in_file(name, "header says " + count_of(layout.count, "point", "points") + ", found " + std::to_string(found));
+  }
+  if (found == 0) fail_in_file(name, "no points");
+}
+
+}  // namespace io
 
 PointCloud read_points(const std::string& path) {
   const std::string text = io::read_whole_file(path);

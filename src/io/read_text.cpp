@@ -59,6 +59,29 @@ std::string read_whole_file(const std::string& path) {
   return text;
 }
 
+std::size_t file_size(const std::string& path) {
+  struct stat info {};
+  errno = 0;
+  if (stat(path.c_str(), &info) != 0) fail_system("open", path, errno);
+  if (S_ISDIR(info.st_mode)) fail_system("read", path, EISDIR);
+  return static_cast<std::size_t>(info.st_size);
+}
+
+std::string read_file_range(const std::string& path, std::size_t begin, std::size_t end) {
+  errno = 0;
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+  if (!file) fail_system("open", path, errno);
+  std::string text;
+  if (end <= begin) return text;
+  if (fseeko(file.get(), static_cast<off_t>(begin), SEEK_SET) != 0) fail_system("read", path, errno ? errno : EIO);
+  text.resize(end - begin);
+  util::advise_huge_pages(text.data(), text.capacity());
+  const std::size_t got = std::fread(text.data(), 1, text.size(), file.get());
+  if (std::ferror(file.get())) fail_system("read", path, errno ? errno : EIO);
+  text.resize(got);
+  return text;
+}
+
 std::string read_whole_stream(std::istream& in, const std::string& name) {
   std::string text;
   std::size_t used = 0;

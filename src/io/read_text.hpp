@@ -17,6 +17,11 @@ std::string display_name(const std::string& path);
 // "cannot open 'x.txt': No such file or directory" or "cannot read 'x.txt': ...".
 std::string read_whole_file(const std::string& path);
 
+// The size in bytes of the file `path`, and the bytes [begin, end) of it (fewer at its end):
+// what each process of a split run reads. Throw InputError as read_whole_file does.
+std::size_t file_size(const std::string& path);
+std::string read_file_range(const std::string& path, std::size_t begin, std::size_t end);
+
 // The whole remaining content of `in`. Throws InputError "cannot read '<name>'" when the
 // stream reports an error (not merely the end of the input).
 std::string read_whole_stream(std::istream& in, const std::string& name);

@@ -27,10 +27,18 @@ inline std::string_view trimmed(std::string_view line) {
 // Walks the content lines of a text held in memory.
 class LineScanner {
  public:
-  explicit LineScanner(std::string_view text) : text_(text) {
+  explicit LineScanner(std::string_view text) : LineScanner(text, 1, true) {}
+
+  // A part of a text made of whole lines: `first_line` is the number of its first physical
+  // line; a byte order mark is skipped only at the start of the whole text (`at_text_start`).
+  LineScanner(std::string_view text, std::size_t first_line, bool at_text_start)
+      : text_(text), line_number_(first_line - 1) {
     constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
-    if (text_.substr(0, kByteOrderMark.size()) == kByteOrderMark) pos_ = kByteOrderMark.size();
+    if (at_text_start && text_.substr(0, kByteOrderMark.size()) == kByteOrderMark) pos_ = kByteOrderMark.size();
   }
+
+  // The byte offset, in the text given, of the next line to read.
+  std::size_t position() const { return pos_; }
 
   // The next content line (without its line end) and its 1-based number; false at the end.
   bool next(std::string_view& line, std::size_t& line_number) {
