@@ -14,24 +14,36 @@ namespace {
 
 using drange::cli::Box;
 
-// Solves a x = b exactly (Gaussian elimination over the rationals); false when singular.
-bool solve_exact(std::vector<std::vector<mpq_class>> a, std::vector<mpq_class> b, std::vector<mpq_class>& x) {
-  const std::size_t n = b.size();
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t p = c;
-    while (p < n && a[p][c] == 0) ++p;
-    if (p == n) return false;
-    std::swap(a[p], a[c]);
-    std::swap(b[p], b[c]);
-    for (std::size_t r = 0; r < n; ++r) {
-      if (r == c || a[r][c] == 0) continue;
-      const mpq_class f = a[r][c] / a[c][c];
-      for (std::size_t k = c; k < n; ++k) a[r][k] -= f * a[c][k];
-      b[r] -= f * b[c];
+// The determinant of a square rational matrix by expansion along the first row: another way
+// to the exact centre than the code under test's elimination, and small enough for d <= 4.
+mpq_class determinant(const std::vector<std::vector<mpq_class>>& a) {
+  const std::size_t n = a.size();
+  if (n == 1) return a[0][0];
+  mpq_class sum = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    std::vector<std::vector<mpq_class>> minor;
+    for (std::size_t r = 1; r < n; ++r) {
+      std::vector<mpq_class> row;
+      for (std::size_t k = 0; k < n; ++k)
+        if (k != j) row.push_back(a[r][k]);
+      minor.push_back(row);
     }
+    const mpq_class term = a[0][j] * determinant(minor);
+    sum += j % 2 ? -term : term;
   }
-  x.resize(n);
-  for (std::size_t c = 0; c < n; ++c) x[c] = b[c] / a[c][c];
+  return sum;
+}
+
+// Solves a x = b exactly by Cramer's rule; false when singular.
+bool solve_exact(const std::vector<std::vector<mpq_class>>& a, const std::vector<mpq_class>& b, std::vector<mpq_class>& x) {
+  const mpq_class det = determinant(a);
+  if (det == 0) return false;
+  x.assign(b.size(), 0);
+  for (std::size_t c = 0; c < b.size(); ++c) {
+    std::vector<std::vector<mpq_class>> replaced(a);
+    for (std::size_t r = 0; r < b.size(); ++r) replaced[r][c] = b[r];
+    x[c] = determinant(replaced) / det;
+  }
   return true;
 }
 
