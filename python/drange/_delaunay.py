@@ -77,7 +77,8 @@ class Delaunay(PointSetAttributes):
         The run's figures: points, distinct_points, simplices, hull_facets,
         search_calls, calls_per_simplex, threads, algorithm (the construction that ran),
         seconds_kdtree, seconds_first_facet, seconds_choice,
-        seconds_search, seconds_total, peak_rss_bytes; and statistics["debug"], a dict
+        seconds_search, seconds_total, peak_rss_bytes, seconds_busy (a list: each
+        search thread's busy time), seconds_critical_path; and statistics["debug"], a dict
         of the engine's internal counters (points_tested, candidates, exact_fallbacks,
         max_open_facets, shell_spheres, wasted_searches, unfiltered_tests), whose meaning follows the
         implementation.

@@ -134,6 +134,9 @@ def test_attributes(pair):
     assert stats["simplices"] == ours.nsimplex and stats["points"] == n
     # The engine's internal counters are apart, in stats["debug"].
     assert stats["debug"]["points_tested"] > 0 and "points_tested" not in stats
+    # One busy time per search thread, none above the critical path.
+    assert len(stats["seconds_busy"]) >= 1
+    assert all(0 <= busy <= stats["seconds_critical_path"] + 1e-9 for busy in stats["seconds_busy"])
     assert ours.lift_points(points[:2]).shape == (2, d + 1)
     assert repr(ours).startswith("<drange.Delaunay")
 
