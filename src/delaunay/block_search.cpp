@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <thread>
 #include <numeric>
+#include <thread>
 #include <vector>
 
 #include "delaunay/local_star.hpp"
