@@ -279,7 +279,7 @@ BlockSearchTotals search_in_blocks(const PointStore& points, const FirstFacet& f
   // its offset, then freed, so that the peak holds the result and one block more.
   std::size_t total = 0;
   for (const Block& part : parts) total += part.rows.size();
-  std::vector<std::vector<std::size_t>> pending(parts.size());
+  std::vector<std::size_t> pending;  // facets that no block could link alone
   for (std::size_t b = 0; b < parts.size(); ++b) {
     Block& part = parts[b];
     const std::size_t at = result.simplices.size();
@@ -297,18 +297,16 @@ BlockSearchTotals search_in_blocks(const PointStore& points, const FirstFacet& f
     std::vector<std::int32_t>().swap(part.links);
     give_back_freed_memory();
     for (std::size_t i = at; i < result.neighbors.size(); ++i)
-      if (result.neighbors[i] == kElsewhere) pending[b].push_back(i);
+      if (result.neighbors[i] == kElsewhere) pending.push_back(i);
   }
-  std::vector<std::size_t> all;
   for (std::size_t b = 0; b < parts.size(); ++b) {
-    all.insert(all.end(), pending[b].begin(), pending[b].end());
     totals.counters.calls += parts[b].counters.calls;
     totals.counters.points_tested += parts[b].counters.points_tested;
     totals.counters.candidates += parts[b].counters.candidates;
     totals.hull_facets += parts[b].hull_facets;
     totals.max_open_facets = std::max(totals.max_open_facets, parts[b].max_open_facets);
   }
-  if (neighbors) match_pending(all, w, result);
+  if (neighbors) match_pending(pending, w, result);
   totals.seconds_join = std::chrono::duration<double>(std::chrono::steady_clock::now() - join).count();
   return totals;
 }

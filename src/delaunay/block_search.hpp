@@ -1,7 +1,7 @@
 // delaunay/block_search.hpp: the direct search as blocks that threads wrap on their own.
 //
-// The points, in id order (the kd-tree's, spatially coherent), are cut into one range per
-// thread. Each thread wraps the stars of its range's points (local_star.hpp: a walk from the
+// The points, in id order (the kd-tree's, spatially coherent), are cut into ranges of equal
+// count, which the threads take in turn. A thread wraps the stars of a range's points (local_star.hpp: a walk from the
 // first facet, then the facets through those points, with a facet table and a queue of its
 // own) and keeps the simplices it owns: those whose smallest vertex id is in its range, so
 // that every simplex has exactly one owner. No thread waits for another until the blocks are

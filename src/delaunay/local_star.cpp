@@ -89,15 +89,17 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
   std::vector<std::int32_t> order(wanted);
   std::sort(order.begin(), order.end());
   order.erase(std::unique(order.begin(), order.end()), order.end());
-  // The wanted points: a range of ids (a block) is told by two comparisons, other sets by a
-  // flag per point.
+  // Each wanted point's mark: wanted, or wanted and a vertex of a simplex found (its star is
+  // under way). A range of ids (a block) keeps marks for its own points alone and is told by
+  // two comparisons; other sets keep a mark per point (0: not wanted).
   const bool range = !order.empty() && order.back() - order.front() + 1 == static_cast<std::int32_t>(order.size());
-  const std::int32_t low = order.empty() ? 0 : order.front(), count = static_cast<std::int32_t>(order.size());
-  std::vector<char> is_wanted(range ? 0 : static_cast<std::size_t>(points_.size), 0), covered(static_cast<std::size_t>(points_.size), 0);
-  if (!range)
-    for (const std::int32_t p : order) is_wanted[static_cast<std::size_t>(p)] = 1;
+  const std::int32_t low = range ? order.front() : 0;
+  enum : char { kOther, kWanted, kCovered };
+  std::vector<char> mark(range ? order.size() : static_cast<std::size_t>(points_.size), kOther);
+  for (const std::int32_t p : order) mark[static_cast<std::size_t>(p - low)] = kWanted;
   const auto wanted_point = [&](std::int32_t v) {
-    return range ? static_cast<std::uint32_t>(v - low) < static_cast<std::uint32_t>(count) : is_wanted[static_cast<std::size_t>(v)] != 0;
+    return range ? static_cast<std::size_t>(static_cast<std::uint32_t>(v - low)) < mark.size()
+                 : mark[static_cast<std::size_t>(v)] != kOther;
   };
   // The stars' open facets through a wanted point (found on one side, not yet on the other),
   // and the queue of those to search, least smallest vertex id first: the whole construction's
@@ -129,7 +131,8 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
     vertices_of(s, vertices.data());
     rows.insert(rows.end(), vertices.begin(), vertices.end());
     if (links) links->resize(rows.size(), kNotOpened);
-    for (const std::int32_t v : vertices) covered[static_cast<std::size_t>(v)] = 1;
+    for (const std::int32_t v : vertices)
+      if (wanted_point(v)) mark[static_cast<std::size_t>(v - low)] = kCovered;
     facets_of(s);
     for (std::size_t f = 0; f <= d; ++f) {
       const std::int32_t* ids = &facets_[f * d];
@@ -182,7 +185,7 @@ void StarWrapper::stars(const std::vector<std::int32_t>& wanted, std::vector<std
     reported = rows.size();
   };
   for (const std::int32_t p : order) {
-    if (covered[static_cast<std::size_t>(p)]) continue;
+    if (mark[static_cast<std::size_t>(p - low)] == kCovered) continue;
     walk_to(p, counters);
     found(current_, nullptr);
     settle();
